@@ -60,7 +60,7 @@ def _scalar(arr: np.ndarray) -> np.ndarray | float:
 
 def _atanh_over(gamma: np.ndarray) -> np.ndarray:
     """atanh(gamma)/gamma with its limit 1 at gamma = 0."""
-    safe = np.where(gamma == 0.0, 1.0, gamma)
+    safe = np.where(gamma == 0.0, 0.5, gamma)
     return np.where(gamma == 0.0, 1.0, np.arctanh(safe) / safe)
 
 

@@ -45,7 +45,6 @@ References
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass, replace
 from functools import lru_cache
 
@@ -145,8 +144,8 @@ def paper_mesh(label: str) -> Mesh:
 
 
 def _split(start: float, stop: float, width: float) -> np.ndarray:
-    """Interior nodes plus ``stop`` for about (stop - start)/width equal intervals."""
-    count = max(1, round((stop - start) / width))
+    """Interior nodes plus ``stop`` for the fewest equal intervals no wider than ``width``."""
+    count = max(1, math.ceil((stop - start) / width - 1e-9))
     return np.linspace(start, stop, count + 1)[1:]
 
 
@@ -155,8 +154,9 @@ def friction_mesh(c: float, h: float = 0.02, band: float = 0.08) -> Mesh:
 
     With the defaults and c a multiple of 0.02 this is exactly the paper's mesh
     (|h_i| = .02 except .01 for i = M-7 .. M+8). Near c = 0 or 1 the band is cut at the
-    end of the interval ("modified slightly when c is close to 0 or 1"); elsewhere an
-    interval count is rounded so that c stays a node. Halving ``h`` halves every width.
+    end of the interval ("modified slightly when c is close to 0 or 1"); elsewhere each
+    piece gets the fewest equal intervals no wider than h (or h/2), so c stays a node.
+    Halving ``h`` halves every width.
     """
     c = float(check_c(c))
     if not 0.0 < h <= 0.1:
@@ -340,8 +340,14 @@ def solve_friction(
     Returns
     -------
     SchemeSolution
-        At mu = mu_c; ``converged`` is False (with a warning) if regula falsi did not
-        reach ``tol`` in ``max_iterations`` steps.
+        At mu = mu_c, with |mu*(mu_c) - mu_c| < tol.
+
+    Raises
+    ------
+    RuntimeError
+        If no bracket of mu_c on which regula falsi converges is found: at large gamma
+        and c near 1 the coarse scheme's q/p extrapolation can fail (e.g. nu = -0.9,
+        c = 0.95 at h = 0.02).
     """
     g = resolve_gamma(nu, gamma)
     mesh = friction_mesh(c, h)
@@ -354,25 +360,31 @@ def solve_friction(
         sol = solve_at_mu(mesh, mu, gamma=g)
         return sol.mu_star - mu, sol
 
-    guess = g * float(mu_over_gamma(mesh.c))  # (2.28), the small-gamma eigenvalue
-    lo, hi = 0.5 * guess, 2.0 * guess
-    f_lo, _ = excess(lo)
-    f_hi, _ = excess(hi)
-    for _ in range(30):  # widen the bracket until mu*(mu) - mu falls through zero
-        if f_lo > 0.0 > f_hi:
-            break
-        if f_lo <= 0.0:
-            lo *= 0.5
-            f_lo, _ = excess(lo)
-        if f_hi >= 0.0:
-            hi *= 2.0
-            f_hi, _ = excess(hi)
-    else:
-        raise RuntimeError(
-            f"the paper's scheme finds no eigenvalue on this mesh (c = {c}, gamma = {g:.6g}, h = {h}): "
-            "mu*(mu) - mu does not change sign between "
-            f"{lo:.3g} and {hi:.3g}; its q/p extrapolation fails here, try a smaller h"
-        )
+    # mu*(mu) has poles (a midpoint pressure crossing zero) besides the root, so brackets are
+    # sought outward from the small-gamma eigenvalue (2.28) on a grid of ratio 1.2 and each
+    # fall of mu*(mu) - mu through zero is tried in turn; only a bracket on which regula
+    # falsi reaches |mu* - mu| < tol is accepted, so a pole cannot pass for the root.
+    guess = g * float(mu_over_gamma(mesh.c))
+    grid: dict[int, float] = {}
+    last_failure = "no fall of mu*(mu) - mu through zero"
+    for step in range(41):
+        for k in sorted({step, -step}, reverse=True):
+            grid[k] = excess(guess * 1.2**k)[0]
+            for left in (k - 1, k):
+                if left in grid and left + 1 in grid and grid[left] > 0.0 > grid[left + 1]:
+                    lo, hi = guess * 1.2**left, guess * 1.2**(left + 1)
+                    sol = _regula_falsi(excess, lo, grid[left], hi, grid[left + 1], tol, max_iterations)
+                    if sol.converged:
+                        return sol
+                    last_failure = sol.message
+    raise RuntimeError(
+        f"the paper's scheme finds no eigenvalue on this mesh (c = {c}, gamma = {g:.6g}, h = {h}) "
+        f"for mu within a factor 1.2**40 of {guess:.3g}: {last_failure}"
+    )
+
+
+def _regula_falsi(excess, lo: float, f_lo: float, hi: float, f_hi: float, tol: float, max_iterations: int) -> SchemeSolution:
+    """Illinois regula falsi on mu*(mu) - mu = 0 from a bracket with f_lo > 0 > f_hi (§4.1)."""
     side = 0
     for iteration in range(1, max_iterations + 1):
         mu = hi - f_hi * (hi - lo) / (f_hi - f_lo)  # regula falsi
@@ -390,7 +402,6 @@ def solve_friction(
                 f_lo *= 0.5
             side = -1
     message = f"regula falsi did not reach |mu* - mu| < {tol} in {max_iterations} steps"
-    warnings.warn(message, RuntimeWarning, stacklevel=2)
     return replace(sol, iterations=max_iterations, converged=False, message=message)
 
 

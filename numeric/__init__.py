@@ -1,0 +1,10 @@
+"""Numerical solutions of the Hertz contact problem with finite friction (Spence 1975).
+
+High-accuracy solver: ``flat_punch``, ``stick_radius``, ``friction_coefficient``
+(``numeric.flat_punch``) and ``power_law`` (``numeric.power_law``). The paper's own scheme,
+the baseline, is ``numeric.spence1975``.
+"""
+
+from .flat_punch import FlatPunchSolution, NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
+
+__all__ = ["FlatPunchSolution", "NoEigenvalueError", "flat_punch", "friction_coefficient", "stick_radius"]

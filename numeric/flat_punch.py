@@ -1,0 +1,303 @@
+"""The frictional flat punch: stick radius, friction, compliance and stresses ([S75] §2).
+
+Method, and why: piecewise polynomials in u = t^2 on an hp mesh graded geometrically
+toward the stick-slip boundary and the edge, collocation of (2.2) with every Abel integral
+done exactly, and the eigenvalue condition phi(c-) = 0 solved by a Krylov model of the
+linear system (``numeric.discretize``, ``numeric.eigen``). The solution has power-type
+singularities at x = c and x = 1 whose exponents depend on mu (tan pi alpha = mu gamma),
+so a fixed singular basis would have to change during the eigenvalue iteration; geometric
+grading with low degree near those points and high degree away from them resolves any
+such exponent with exponential convergence in the number of unknowns, and keeps the
+matrices for a given mesh reusable (cached) across mu and gamma.
+
+The limits use closed forms: mu = 0 is frictionless (2.26) with c = 0; gamma = 0 (an
+incompressible solid) has no shear coupling, q = 0 and c = 1 for any mu > 0; mu = inf or
+c = 1 is the fully adhesive solution of Appendix B.
+
+``error`` is the difference between two resolution levels (the one returned and the next
+coarser), an upper estimate of the returned level's error because the levels converge
+exponentially (tests check it against a finer level).
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy import optimize
+
+from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
+from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
+from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
+
+from .discretize import LEVELS
+from .eigen import FlatField, NoEigenvalueError, solve_adhesive, solve_mu
+
+__all__ = ["FlatPunchSolution", "flat_punch", "stick_radius", "friction_coefficient", "NoEigenvalueError"]
+
+DEFAULT_LEVEL = 2
+ADHESIVE_EDGE_BREAKPOINTS = np.concatenate([[0.0, 0.5], 1.0 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])
+
+
+def _check_x(x: ArrayLike) -> np.ndarray:
+    xs = np.asarray(x, dtype=float)
+    if np.any(np.isnan(xs)) or np.any((xs < 0.0) | (xs > 1.0)):
+        raise ValueError(f"x (radius over contact radius) must lie in [0, 1], got {x!r}")
+    return xs
+
+
+@dataclass(frozen=True, slots=True)
+class _ClosedForm:
+    """Frictionless (c = 0 or gamma = 0) or fully adhesive (c = 1) stresses in closed form."""
+
+    gamma: float
+    adhesive: bool
+
+    def pressure(self, x: np.ndarray) -> np.ndarray:
+        if self.adhesive and self.gamma > 0.0:
+            return pressure_adhesive(x, self.gamma)  # (B3)
+        return frictionless_pressure(x)  # (2.26)
+
+    def shear(self, x: np.ndarray) -> np.ndarray:
+        if self.adhesive and self.gamma > 0.0:
+            return shear_adhesive(x, self.gamma)  # (B3)
+        return np.zeros(np.shape(x))
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        return np.zeros(np.shape(x))
+
+
+@dataclass(frozen=True, slots=True)
+class FlatPunchSolution:
+    """A flat punch pressed into a half-space with friction, [S75] §2.
+
+    Attributes
+    ----------
+    nu : float or None
+        Poisson's ratio (None when gamma was given directly).
+    gamma : float
+        Coupling constant (2.2).
+    mu : float
+        Friction coefficient (inf for the adhesive limit).
+    c : float
+        Stick radius over contact radius.
+    compliance : float
+        P* = (pi/2) int_0^1 x p dx (2.4); the load is P = 4 G a P* delta / (1 - nu).
+    error : float
+        Estimated absolute error of c, mu and compliance (0 for closed forms).
+    route : str
+        "closed form (...)" or "solver level L, n unknowns".
+    breakpoints : ndarray
+        Points in [0, 1] between which p and q are smooth (graded toward c and 1).
+
+    Methods pressure(x), shear(x), slip(x) give p, q of (2.1) and u of (2.10) at
+    0 <= x <= 1 (vectorised); p and q are infinite at x = 1 only in the adhesive and
+    frictionless cases, u is 0 in the stick zone.
+    """
+
+    nu: float | None
+    gamma: float
+    mu: float
+    c: float
+    compliance: float
+    error: float
+    route: str
+    breakpoints: np.ndarray
+    _field: FlatField | _ClosedForm
+
+    def pressure(self, x: ArrayLike) -> np.ndarray | float:
+        """Contact pressure p(x), [S75] (2.1)."""
+        return self._at(x, self._field.pressure, edge=self._edge_value())
+
+    def shear(self, x: ArrayLike) -> np.ndarray | float:
+        """Shear traction q(x), [S75] (2.1); q = mu p in the slip annulus."""
+        return self._at(x, self._field.shear, edge=self._edge_value(shear=True))
+
+    def slip(self, x: ArrayLike) -> np.ndarray | float:
+        """Radial displacement rate u(x) = d u_r / d delta of (2.10); 0 on the stick zone."""
+        return self._at(x, self._field.slip, edge=None)
+
+    def _edge_value(self, shear: bool = False) -> float:
+        if isinstance(self._field, _ClosedForm):
+            return 0.0 if shear and not (self._field.adhesive and self.gamma > 0) else math.inf
+        return math.inf  # (1 - x)^(alpha - 1/2), alpha < 1/2
+
+    def _at(self, x: ArrayLike, f, edge: float | None) -> np.ndarray | float:
+        xs = _check_x(x)
+        flat = xs.ravel()
+        out = np.empty(flat.shape)
+        interior = flat < 1.0
+        out[interior] = f(flat[interior])
+        if edge is None:
+            out[~interior] = f(np.nextafter(1.0, 0.0) * np.ones((~interior).sum())) if np.any(~interior) else 0.0
+        else:
+            out[~interior] = edge
+        out = out.reshape(xs.shape)
+        return out[()] if out.ndim == 0 else out
+
+
+def _closed_form(nu, gamma: float, mu: float, c: float, adhesive: bool, why: str) -> FlatPunchSolution:
+    compliance = float(compliance_adhesive(gamma)) if adhesive else 1.0  # (B4) or frictionless
+    breakpoints = ADHESIVE_EDGE_BREAKPOINTS.copy()
+    breakpoints.setflags(write=False)
+    return FlatPunchSolution(nu, gamma, mu, c, compliance, 0.0, f"closed form ({why})", breakpoints, _ClosedForm(gamma, adhesive))
+
+
+def _from_fields(nu, fine: FlatField, coarse: FlatField, level: int, error: float) -> FlatPunchSolution:
+    return FlatPunchSolution(
+        nu=nu,
+        gamma=fine.gamma,
+        mu=fine.mu,
+        c=fine.c,
+        compliance=fine.compliance,
+        error=error,
+        route=f"solver level {level}, {fine.n_unknowns} unknowns",
+        breakpoints=fine.breakpoints,
+        _field=fine,
+    )
+
+
+def _solve_c(c: float, gamma: float, level: int) -> tuple[FlatField, FlatField]:
+    fine = solve_mu(c, gamma, LEVELS[level])
+    coarse = solve_mu(c, gamma, LEVELS[level - 1])
+    return fine, coarse
+
+
+def _first_order_stick_radius(mu: float, gamma: float) -> float:
+    """Invert the small-gamma law (2.28), mu/gamma = atanh(c)/(c K'(c)), for c."""
+    target = mu / gamma
+    g = lambda s: math.log(float(mu_over_gamma(1.0 / (1.0 + math.exp(-s))))) - math.log(target)  # noqa: E731
+    return 1.0 / (1.0 + math.exp(-optimize.brentq(g, -60.0, 36.0, xtol=1e-12)))
+
+
+def _invert(mu: float, gamma: float, level: int, c_guess: float, xtol: float) -> FlatField:
+    """Stick radius with mu_c(c) = mu at one level: Brent in s = logit(c) on log mu."""
+    cache: dict[float, FlatField] = {}
+
+    def g(s: float) -> float:
+        c = 1.0 / (1.0 + math.exp(-s))
+        try:
+            field = solve_mu(c, gamma, LEVELS[level])
+        except NoEigenvalueError:
+            return math.inf  # beyond the largest stick radius: mu is unbounded there
+        cache[s] = field
+        return math.log(field.mu) - math.log(mu)
+
+    s0 = math.log(c_guess / (1.0 - c_guess))
+    step = 0.05
+    lo, hi = s0 - step, s0 + step
+    g_lo, g_hi = g(lo), g(hi)
+    while g_lo > 0.0:
+        lo, hi, g_hi = lo - 2 * step, lo, g_lo
+        step *= 2
+        g_lo = g(lo)
+        if lo < -40:
+            raise NoEigenvalueError(f"no stick radius above 1e-17 for mu = {mu}, gamma = {gamma:.6g}")
+    while g_hi < 0.0:
+        lo, g_lo, hi = hi, g_hi, hi + 2 * step
+        step *= 2
+        g_hi = g(hi)
+        if hi > 36:
+            raise NoEigenvalueError(f"no stick radius below 1 - 1e-16 for mu = {mu}, gamma = {gamma:.6g}")
+    s = optimize.brentq(g, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
+    return cache[s] if s in cache else solve_mu(1.0 / (1.0 + math.exp(-s)), gamma, LEVELS[level])
+
+
+def flat_punch(
+    nu: float | None = None,
+    mu: float | None = None,
+    c: float | None = None,
+    *,
+    gamma: float | None = None,
+    level: int = DEFAULT_LEVEL,
+) -> FlatPunchSolution:
+    """Solve the flat-punch problem (2.7)-(2.9) for given friction or given stick radius.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, -1 < nu <= 1/2 (or give ``gamma`` for dissimilar bodies).
+    mu : float, optional
+        Friction coefficient, 0 <= mu <= inf. Exactly one of ``mu`` and ``c``.
+    c : float, optional
+        Stick radius over contact radius, 0 < c <= 1; the friction coefficient that
+        produces it is returned.
+    gamma : float, optional
+        Coupling constant (2.2) instead of ``nu``.
+    level : int
+        Resolution level 1..4 of ``numeric.discretize.LEVELS`` (the next coarser one gives
+        the error estimate); 2 reaches ~1e-10.
+
+    Returns
+    -------
+    FlatPunchSolution
+
+    Raises
+    ------
+    NoEigenvalueError
+        If no friction coefficient gives the requested c (large gamma, c near 1).
+
+    Examples
+    --------
+    >>> s = flat_punch(nu=0.0, c=0.5)
+    >>> round(s.mu, 10), round(s.compliance, 10), s.error < 1e-9
+    (0.298714616, 1.0522119983, True)
+    """
+    g = resolve_gamma(nu, gamma)
+    nu_value = None if nu is None else float(check_nu(nu))
+    if (mu is None) == (c is None):
+        raise ValueError("give exactly one of mu (friction coefficient) or c (stick radius)")
+    if not 1 <= int(level) < len(LEVELS) or int(level) != level:
+        raise ValueError(f"level must be an integer in [1, {len(LEVELS) - 1}], got {level!r}")
+    if c is not None:
+        c_value = float(check_c(c))
+        if c_value == 1.0:
+            return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
+        if g == 0.0:
+            return _closed_form(nu_value, g, 0.0, c_value, False, "gamma = 0: no coupling, mu = 0 (2.28)")
+        fine, coarse = _solve_c(c_value, g, level)
+        return _from_fields(nu_value, fine, coarse, level, max(abs(fine.mu - coarse.mu), abs(fine.compliance - coarse.compliance)))
+    mu_value = float(check_mu(mu))
+    if mu_value == 0.0:
+        return _closed_form(nu_value, g, 0.0, 0.0, False, "frictionless, (2.26)")
+    if mu_value == math.inf:
+        return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
+    if g == 0.0:
+        return _closed_form(nu_value, g, mu_value, 1.0, False, "gamma = 0: no coupling, no slip")
+    coarse = _invert(mu_value, g, level - 1, _first_order_stick_radius(mu_value, g), 1e-13)
+    fine = _invert(mu_value, g, level, coarse.c, 1e-14)
+    error = max(abs(fine.c - coarse.c), abs(fine.compliance - coarse.compliance))
+    return _from_fields(nu_value, fine, coarse, level, error)
+
+
+def _broadcast(f, *args) -> np.ndarray | float:
+    arrays = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
+    out = np.array([f(*vals) for vals in zip(*(a.ravel() for a in arrays))], dtype=float).reshape(arrays[0].shape)
+    return out[()] if out.ndim == 0 else out
+
+
+def stick_radius(mu: ArrayLike, nu: ArrayLike, *, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+    """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
+
+    Examples
+    --------
+    >>> round(float(stick_radius(0.298714615962, 0.0)), 9)
+    0.5
+    """
+    check_mu(mu)
+    check_nu(nu)
+    return _broadcast(lambda m, n: flat_punch(nu=n, mu=m, level=level).c, mu, nu)
+
+
+def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+    """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays."""
+    check_c(c)
+    check_nu(nu)
+    return _broadcast(lambda cc, n: flat_punch(nu=n, c=cc, level=level).mu, c, nu)

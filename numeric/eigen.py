@@ -251,8 +251,11 @@ def _krylov_root(factor: _Factor, D1_slip: np.ndarray, b: np.ndarray, ms: int, c
     return mu, V[:, : z.size] @ z, res
 
 
-def solve_mu(c: float, gamma: float, res: Resolution, *, mu_max: float = 1e4, max_outer: int = 40) -> FlatField:
+def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None = None, mu_max: float = 1e4,
+             max_outer: int = 40) -> FlatField:
     """Friction coefficient mu_c(c, gamma) and the flat-punch solution, 0 < c < 1, gamma > 0.
+
+    ``mu_guess`` centres the LU (default: the small-gamma eigenvalue (2.28)).
 
     Raises
     ------
@@ -269,7 +272,7 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_max: float = 1e4, ma
     l_q = np.zeros(n)
     l_q[ms : 2 * ms] = end
     D1_slip = D1[:, 2 * ms :]
-    centre = gamma * float(mu_over_gamma(c))  # (2.28)
+    centre = gamma * float(mu_over_gamma(c)) if mu_guess is None else mu_guess  # (2.28)
     lo = hi = None  # (mu, F) with F(lo) < 0 < F(hi)
     side = 0
     for _ in range(max_outer):

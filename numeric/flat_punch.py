@@ -150,7 +150,7 @@ def _closed_form(nu, gamma: float, mu: float, c: float, adhesive: bool, why: str
     return FlatPunchSolution(nu, gamma, mu, c, compliance, 0.0, f"closed form ({why})", breakpoints, _ClosedForm(gamma, adhesive))
 
 
-def _from_fields(nu, fine: FlatField, coarse: FlatField, level: int, error: float) -> FlatPunchSolution:
+def _from_field(nu, fine: FlatField, level: int, error: float) -> FlatPunchSolution:
     return FlatPunchSolution(
         nu=nu,
         gamma=fine.gamma,
@@ -164,12 +164,6 @@ def _from_fields(nu, fine: FlatField, coarse: FlatField, level: int, error: floa
     )
 
 
-def _solve_c(c: float, gamma: float, level: int) -> tuple[FlatField, FlatField]:
-    fine = solve_mu(c, gamma, LEVELS[level])
-    coarse = solve_mu(c, gamma, LEVELS[level - 1])
-    return fine, coarse
-
-
 def _first_order_stick_radius(mu: float, gamma: float) -> float:
     """Invert the small-gamma law (2.28), mu/gamma = atanh(c)/(c K'(c)), for c."""
     target = mu / gamma
@@ -177,20 +171,32 @@ def _first_order_stick_radius(mu: float, gamma: float) -> float:
     return 1.0 / (1.0 + math.exp(-optimize.brentq(g, -60.0, 36.0, xtol=1e-12)))
 
 
-def _invert(mu: float, gamma: float, level: int, c_guess: float, xtol: float) -> FlatField:
-    """Stick radius with mu_c(c) = mu at one level: Brent in s = logit(c) on log mu."""
-    cache: dict[float, FlatField] = {}
+def _logit(c: float) -> float:
+    return math.log(c / (1.0 - c))
+
+
+def _expit(s: float) -> float:
+    return 1.0 / (1.0 + math.exp(-s))
+
+
+def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float) -> tuple[FlatField, float]:
+    """Stick radius with mu_c(c) = mu at one level by Brent in s = logit(c) on log mu.
+
+    Returns the solution and d(log mu)/ds at the root (from the two nearest evaluations)."""
+    evaluations: dict[float, FlatField] = {}
 
     def g(s: float) -> float:
-        c = 1.0 / (1.0 + math.exp(-s))
+        c = _expit(s)
+        if c > 1.0 - 1e-12:
+            return math.inf  # treated as beyond reach: see the NoEigenvalueError below
         try:
-            field = solve_mu(c, gamma, LEVELS[level])
+            field = solve_mu(c, gamma, LEVELS[level], mu_guess=mu)
         except NoEigenvalueError:
             return math.inf  # beyond the largest stick radius: mu is unbounded there
-        cache[s] = field
+        evaluations[s] = field
         return math.log(field.mu) - math.log(mu)
 
-    s0 = math.log(c_guess / (1.0 - c_guess))
+    s0 = _logit(c_guess)
     step = 0.05
     lo, hi = s0 - step, s0 + step
     g_lo, g_hi = g(lo), g(hi)
@@ -204,10 +210,27 @@ def _invert(mu: float, gamma: float, level: int, c_guess: float, xtol: float) ->
         lo, g_lo, hi = hi, g_hi, hi + 2 * step
         step *= 2
         g_hi = g(hi)
-        if hi > 36:
-            raise NoEigenvalueError(f"no stick radius below 1 - 1e-16 for mu = {mu}, gamma = {gamma:.6g}")
-    s = optimize.brentq(g, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
-    return cache[s] if s in cache else solve_mu(1.0 / (1.0 + math.exp(-s)), gamma, LEVELS[level])
+        if hi > 28:
+            raise NoEigenvalueError(f"the stick radius for mu = {mu}, gamma = {gamma:.6g} is not below 1 - 1e-12")
+    root = optimize.brentq(g, lo, hi, xtol=1e-11)
+    field = evaluations.get(root) or solve_mu(_expit(root), gamma, LEVELS[level], mu_guess=mu)
+    near = sorted((s for s in evaluations if s != root), key=lambda s: abs(s - root))[0]
+    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (near - root)
+    return field, slope
+
+
+def _invert(mu: float, gamma: float, level: int) -> tuple[FlatField, FlatField]:
+    """Fine and coarse solutions with mu_c(c) = mu.
+
+    Brent on the coarse level, then one Newton step in logit(c) on the fine level with the
+    coarse slope: the fine and coarse mu(c) differ by the coarse level's error (~1e-8), so
+    the step is tiny and its error (step times the slope's relative error) is negligible.
+    """
+    coarse, slope = _invert_coarse(mu, gamma, level - 1, _first_order_stick_radius(mu, gamma))
+    s = _logit(coarse.c)
+    at_coarse_c = solve_mu(coarse.c, gamma, LEVELS[level], mu_guess=mu)
+    s_new = s - (math.log(at_coarse_c.mu) - math.log(mu)) / slope
+    return solve_mu(_expit(s_new), gamma, LEVELS[level], mu_guess=mu), coarse
 
 
 def flat_punch(
@@ -262,8 +285,8 @@ def flat_punch(
             return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
         if g == 0.0:
             return _closed_form(nu_value, g, 0.0, c_value, False, "gamma = 0: no coupling, mu = 0 (2.28)")
-        fine, coarse = _solve_c(c_value, g, level)
-        return _from_fields(nu_value, fine, coarse, level, max(abs(fine.mu - coarse.mu), abs(fine.compliance - coarse.compliance)))
+        fine, coarse = solve_mu(c_value, g, LEVELS[level]), solve_mu(c_value, g, LEVELS[level - 1])
+        return _from_field(nu_value, fine, level, max(abs(fine.mu - coarse.mu), abs(fine.compliance - coarse.compliance)))
     mu_value = float(check_mu(mu))
     if mu_value == 0.0:
         return _closed_form(nu_value, g, 0.0, 0.0, False, "frictionless, (2.26)")
@@ -271,10 +294,9 @@ def flat_punch(
         return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
     if g == 0.0:
         return _closed_form(nu_value, g, mu_value, 1.0, False, "gamma = 0: no coupling, no slip")
-    coarse = _invert(mu_value, g, level - 1, _first_order_stick_radius(mu_value, g), 1e-13)
-    fine = _invert(mu_value, g, level, coarse.c, 1e-14)
+    fine, coarse = _invert(mu_value, g, level)
     error = max(abs(fine.c - coarse.c), abs(fine.compliance - coarse.compliance))
-    return _from_fields(nu_value, fine, coarse, level, error)
+    return _from_field(nu_value, fine, level, error)
 
 
 def _broadcast(f, *args) -> np.ndarray | float:

@@ -143,11 +143,14 @@ def _graded_side(length: float, layers: int, sigma: float, kmin: int, kmax: int,
     return d[:-1], d[1:], degree
 
 
-def _reference_meshes(res: Resolution) -> tuple[Elements, Elements]:
-    """Stick mesh on u~ in (0, 1) graded toward 1 (anchor 1); slip mesh graded toward 0 and 1."""
+def _reference_meshes(res: Resolution, extra_layers: int) -> tuple[Elements, Elements]:
+    """Stick mesh on u~ in (0, 1) graded toward 1 (anchor 1); slip mesh graded toward 0 and 1.
+
+    ``extra_layers`` more layers toward u~ = 0 on the slip side resolve the scale c^2 of the
+    stick-slip boundary when c is small (the stick side is scaled by c^2 already)."""
     far, near, degree = _graded_side(1.0, res.layers_c, res.sigma, res.kmin, res.kmax, res.slope)
     stick = Elements(np.ones(degree.size), -far, -near, degree)
-    a_far, a_near, a_deg = _graded_side(res.split, res.layers_c, res.sigma, res.kmin, res.kmax, res.slope)
+    a_far, a_near, a_deg = _graded_side(res.split, res.layers_c + extra_layers, res.sigma, res.kmin, res.kmax, res.slope)
     b_far, b_near, b_deg = _graded_side(1 - res.split, res.layers_edge, res.sigma, res.kmin, res.kmax, res.slope)
     slip = Elements(
         np.concatenate([np.zeros(a_deg.size), np.ones(b_deg.size)]),
@@ -231,8 +234,8 @@ class _Reference:
 
 
 @lru_cache(maxsize=16)
-def _reference(res: Resolution) -> _Reference:
-    stick, slip = _reference_meshes(res)
+def _reference(res: Resolution, extra_layers: int) -> _Reference:
+    stick, slip = _reference_meshes(res, extra_layers)
     sn, ln = stick.nodes(), slip.nodes()
     U_s, Lo_s = abel_matrices(stick, *sn)
     U_l, Lo_l = abel_matrices(slip, *ln)
@@ -267,8 +270,10 @@ class Discretisation:
 
 def discretise(c: float, res: Resolution) -> Discretisation:
     """The discretisation for 0 < c < 1 from the cached reference meshes and blocks."""
-    ref = _reference(res)
     c2 = c * c
+    # grade the slip side toward c^2 as finely as the stick side (smallest elements
+    # split sigma^L and c^2 sigma^L): log(c^2 / split) / log(sigma) extra layers for small c
+    ref = _reference(res, max(0, math.floor(math.log(c2 / res.split) / math.log(res.sigma))))
     w = (1.0 - c) * (1.0 + c)
     stick = ref.stick.scaled(np.full(len(ref.stick), c2), c2)
     slip = ref.slip.scaled(np.where(ref.slip.anchor == 0.0, c2, 1.0), w)

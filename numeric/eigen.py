@@ -43,11 +43,15 @@ from .discretize import (
     legendre_values,
 )
 
-__all__ = ["FlatField", "solve_mu", "solve_adhesive", "NoEigenvalueError"]
+__all__ = ["FlatField", "solve_mu", "solve_adhesive", "NoEigenvalueError", "SolverError"]
 
 
 class NoEigenvalueError(RuntimeError):
     """No friction coefficient mu >= 0 gives the stick radius asked for."""
+
+
+class SolverError(RuntimeError):
+    """The solver did not converge at this resolution (e.g. c below ~1e-4 at fine levels)."""
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:
@@ -226,20 +230,28 @@ def _krylov_root(factor: _Factor, D1_slip: np.ndarray, b: np.ndarray, ms: int, c
                 ev = np.array([mu - mu0])
             candidates = []
             for delta in ev:
-                zz = np.linalg.solve(eye + delta * Hm, e1)
+                try:
+                    zz = np.linalg.solve(eye + delta * Hm, e1)
+                except np.linalg.LinAlgError:  # the model is singular at this delta: no root there
+                    continue
                 candidates.append((abs(delta) * H[m, m - 1] * abs(zz[-1]) / beta, abs(delta), delta))
+            if not candidates:
+                continue
             candidates.sort(key=lambda t: (t[0] > 1e-13, t[1] if t[0] <= 1e-13 else t[0]))
             delta = candidates[0][2]
-            for _ in range(3):  # Newton polish on the model
-                M = eye + delta * Hm
-                zz = np.linalg.solve(M, e1)
-                dz = -np.linalg.solve(M, Hm @ zz)
-                F = (mu0 + delta) * (a_p @ zz) - c * (a_q @ zz)
-                dF = a_p @ zz + (mu0 + delta) * (a_p @ dz) - c * (a_q @ dz)
-                if dF == 0.0:
-                    break
-                delta -= F / dF
-            zz = np.linalg.solve(eye + delta * Hm, e1)
+            try:
+                for _ in range(3):  # Newton polish on the model
+                    M = eye + delta * Hm
+                    zz = np.linalg.solve(M, e1)
+                    dz = -np.linalg.solve(M, Hm @ zz)
+                    F = (mu0 + delta) * (a_p @ zz) - c * (a_q @ zz)
+                    dF = a_p @ zz + (mu0 + delta) * (a_p @ dz) - c * (a_q @ dz)
+                    if dF == 0.0:
+                        break
+                    delta -= F / dF
+                zz = np.linalg.solve(eye + delta * Hm, e1)
+            except np.linalg.LinAlgError:
+                continue
             res_new = abs(delta) * H[m, m - 1] * abs(zz[-1]) / beta
             converged = abs(mu0 + delta - mu) < tol * max(1.0, mu0 + delta) and res_new < 1e-13
             mu, res, z = mu0 + delta, res_new, zz
@@ -278,7 +290,8 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None 
     for _ in range(max_outer):
         factor = _Factor(D0 + centre * D1)
         mu, z, residual = _krylov_root(factor, D1_slip, b, ms, c, centre, l_p, l_q)
-        if residual < 1e-13 and mu > 0 and (lo is None or mu > lo[0]) and (hi is None or mu < hi[0]):
+        if (residual < 1e-13 and mu > 0 and (lo is None or mu > lo[0]) and (hi is None or mu < hi[0])
+                and _admissible(z, mu, d)):
             break
         r0 = factor.solve(b)
         F = centre * (l_p @ r0) - c * (l_q @ r0)
@@ -302,7 +315,7 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None 
                 "for large gamma the stick radius has an upper bound below 1"
             )
     else:
-        raise NoEigenvalueError(f"eigenvalue iteration did not converge for c = {c}, gamma = {gamma:.6g}")
+        raise SolverError(f"eigenvalue iteration did not converge for c = {c}, gamma = {gamma:.6g} at this level")
     P_st, Q_st, P_sl = z[:ms], z[ms : 2 * ms], z[2 * ms :]
     compliance = 0.25 * math.pi * (d.w_stick @ P_st + d.w_slip @ P_sl)  # (2.4): (pi/2) int x p dx = (pi/4) int P du
     Q_sl = mu * P_sl / d.x_slip
@@ -319,6 +332,19 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None 
         _slip_p=_Piecewise.from_nodal(d.slip, P_sl),
         _slip_u_star=(d.slip, _frozen(u_star)),
     )
+
+
+def _admissible(z: np.ndarray, mu: float, d: Discretisation) -> bool:
+    """The root is the physical eigenvalue only if p > 0 and mu p - q >= 0 on the stick nodes (2.8).
+
+    A root of the reduced model can be spurious (a mu where the discrete system is nearly
+    singular, with mu p - q ~ -1e3 and p < 0); the constraint rejects it. The tolerance,
+    1e-3 of mu max p, passes the discretisation error of mu p - q at the node next to c,
+    where the exact mu p - q vanishes like (c - x)^(1/2 - alpha) (measured down to -2e-6).
+    """
+    ms = d.x_stick.size
+    p, q = z[:ms], d.x_stick * z[ms : 2 * ms]
+    return bool(np.all(p > 0.0) and np.all(mu * p - q >= -1e-3 * mu * np.max(p)))
 
 
 def _breakpoints(groups: list[Elements]) -> np.ndarray:

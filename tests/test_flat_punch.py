@@ -1,0 +1,428 @@
+"""The high-accuracy flat-punch solver (``numeric.flat_punch``) proved against independent sources.
+
+Each numerical claim is checked against something the solver does not compute itself:
+exact closed forms evaluated here with ``math``/mpmath (App. B, (2.26), (4.10)), the paper's
+own scheme (``numeric.spence1975``) extrapolated in its mesh width, the solver's own finer
+levels (a convergence study), the small-gamma law (2.28), the local analysis of
+reformulation.md and the constraints (2.8)-(2.9). Every tolerance says where it comes from;
+measured values quoted in comments were measured once when the test was written.
+
+Known solver problems found while writing these tests are marked ``xfail(strict=True)``
+with the reason; the tolerance is the principled one, so the mark must go when the solver
+is fixed (strict: an unexpected pass fails the run).
+"""
+
+import math
+import time
+
+import mpmath
+import numpy as np
+import pytest
+
+from asymptotics.adhesive import pressure_adhesive_mp, shear_adhesive_mp
+from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.materials import gamma_dissimilar
+from numeric import NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
+from numeric.discretize import LEVELS
+from numeric.eigen import solve_adhesive, solve_mu
+from numeric.paper_tables import PAPER
+from numeric.spence1975 import solve_friction
+
+
+def _gamma(nu: float) -> float:
+    """gamma = (1 - 2 nu)/(2 - 2 nu) of (2.2), written out here (not ``gamma_from_nu``)."""
+    return (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu)
+
+
+def _adhesive_exact(gamma: float) -> tuple[float, float, float]:
+    """P* (B4), p0(0) and lim q0/x (4.10) of the adhesive punch, in mpmath at 30 digits."""
+    with mpmath.workdps(30):
+        g = mpmath.mpf(gamma)
+        kappa = 2 * mpmath.atanh(g) / mpmath.pi
+        p0 = kappa / g * mpmath.cosh(mpmath.pi * kappa / 2)
+        return float(mpmath.atanh(g) / g), float(p0), float(kappa * p0 / 2)
+
+
+# ---------------------------------------------------------------------------------------
+# 1. Exact limits
+# ---------------------------------------------------------------------------------------
+
+
+def test_frictionless_limit_mu_zero():
+    # mu = 0: p = (2/pi)(1 - x^2)^(-1/2) (2.26), q = 0, c = 0, P* = 1. Closed-form route:
+    # the formula is evaluated here independently, with 1 - x^2 = (1 - x)(1 + x) (exact
+    # near x = 1); 1e-15 allows a different rounding order.
+    s = flat_punch(nu=0.25, mu=0.0)
+    x = np.array([0.0, 0.3, 0.9, 1 - 1e-9])
+    assert s.c == 0.0 and s.compliance == 1.0 and s.error == 0.0
+    np.testing.assert_allclose(s.pressure(x), 2 / np.pi / np.sqrt((1 - x) * (1 + x)), rtol=1e-15, atol=0)
+    assert np.all(s.shear(x) == 0.0) and np.all(s.slip(x) == 0.0)
+
+
+@pytest.mark.parametrize("kwargs", [dict(mu=math.inf), dict(c=1.0)])
+def test_adhesive_limit_closed_forms(kwargs):
+    # mu = inf or c = 1: the stresses of (B3) against direct mpmath quadrature of (B3) at 30
+    # digits; 1e-13 relative is the accuracy of the 160-point Gauss rule used by the closed
+    # form (measured worst 4e-14, tests/test_adhesive.py). P* = atanh(gamma)/gamma (B4) to
+    # 2 ulp (np.arctanh vs math.atanh).
+    nu = 0.25
+    g = _gamma(nu)
+    s = flat_punch(nu=nu, **kwargs)
+    assert s.c == 1.0 and s.mu == math.inf
+    assert s.compliance == pytest.approx(math.atanh(g) / g, rel=5e-16)
+    x = np.array([0.0, 0.3, 0.9, 0.999])
+    p_ref = np.array([float(pressure_adhesive_mp(v, g)) for v in x])
+    q_ref = np.array([float(shear_adhesive_mp(v, g)) for v in x])
+    np.testing.assert_allclose(s.pressure(x), p_ref, rtol=1e-13, atol=0)
+    np.testing.assert_allclose(s.shear(x), q_ref, rtol=1e-13, atol=1e-300)
+
+
+def test_incompressible_limit_has_no_coupling():
+    # nu = 1/2: gamma = 0 decouples (2.2): q = 0 and p is frictionless for any mu; the
+    # eigenvalue relation (2.28) mu = gamma f0(c) gives mu = 0 for every c.
+    s = flat_punch(nu=0.5, mu=0.3)
+    x = np.array([0.0, 0.5, 0.99])
+    assert s.gamma == 0.0 and s.compliance == 1.0
+    np.testing.assert_allclose(s.pressure(x), 2 / np.pi / np.sqrt((1 - x) * (1 + x)), rtol=1e-15, atol=0)
+    assert np.all(s.shear(x) == 0.0)
+    assert flat_punch(nu=0.5, c=0.5).mu == 0.0
+
+
+ADHESIVE_GAMMAS = [0.5, 1 / 3, 0.74]  # nu = 0, 1/4, -0.92
+
+
+@pytest.mark.parametrize("level", [3, 4])
+@pytest.mark.parametrize("gamma", ADHESIVE_GAMMAS)
+def test_adhesive_solver_against_closed_forms(gamma, level):
+    # The solver's own c = 1 mesh (not the closed form): P* (B4) and p(0) (4.10) from
+    # mpmath. 1e-11 is the accuracy levels 3-4 are meant to reach; measured worst 7.3e-12
+    # (p(0), gamma = .74, level 3), otherwise <= 1.8e-12.
+    field = solve_adhesive(gamma, LEVELS[level])
+    compliance, p0, _ = _adhesive_exact(gamma)
+    assert abs(field.compliance - compliance) < 1e-11
+    assert abs(field.pressure(np.array([0.0]))[0] - p0) < 1e-11
+    # the whole profile against (B3) by mpmath quadrature, same 1e-11 relative budget
+    # (measured worst 1.4e-12, q at x = .3, gamma = .5, level 3).
+    x = np.array([0.3, 0.7, 0.95, 0.999])
+    np.testing.assert_allclose(field.pressure(x), [float(pressure_adhesive_mp(v, gamma)) for v in x], rtol=1e-11)
+    np.testing.assert_allclose(field.shear(x), [float(shear_adhesive_mp(v, gamma)) for v in x], rtol=1e-11)
+
+
+def _slope_defect(measured: str):
+    return pytest.mark.xfail(strict=True, reason=f"solver accuracy below the 1e-11 target (reported): q'(0) error {measured}")
+
+
+@pytest.mark.parametrize(
+    "gamma, level",
+    [
+        (0.5, 3),
+        (0.5, 4),
+        pytest.param(1 / 3, 3, marks=_slope_defect("1.8e-11 at gamma = 1/3, level 3")),
+        (1 / 3, 4),
+        pytest.param(0.74, 3, marks=_slope_defect("1.4e-10 at gamma = .74, level 3")),
+        pytest.param(0.74, 4, marks=_slope_defect("2.4e-11 at gamma = .74, level 4")),
+    ],
+)
+def test_adhesive_solver_shear_slope(gamma, level):
+    # q'(0) = kappa p0(0)/2 (4.10) from mpmath, read as q(x)/x at x = 1e-7 (q = x Q(x^2),
+    # so the O(x^2) correction is 1e-14 relative). Target 1e-11 absolute; measured at
+    # gamma = .5: 4.2e-12 (level 3), 1.5e-13 (level 4); gamma = 1/3, level 4: 2.6e-12.
+    field = solve_adhesive(gamma, LEVELS[level])
+    q_slope = _adhesive_exact(gamma)[2]
+    assert abs(field.shear(np.array([1e-7]))[0] / 1e-7 - q_slope) < 1e-11
+
+
+# ---------------------------------------------------------------------------------------
+# 2. Two methods agree: the paper's scheme, extrapolated in h, against the solver
+# ---------------------------------------------------------------------------------------
+
+SCHEME_H = (0.02, 0.01, 0.005, 0.0025)
+
+
+def _aitken(values: np.ndarray) -> tuple[float, float]:
+    """Limit of a sequence at h, h/2, h/4 with unknown order: Aitken's delta-squared.
+
+    Returns the limit from the last three terms and the observed order log2(ratio)."""
+    d1, d2 = values[-2] - values[-3], values[-1] - values[-2]
+    ratio = d1 / d2
+    return values[-1] + d2 / (ratio - 1.0), math.log2(ratio)
+
+
+@pytest.mark.parametrize("c, nu", [(0.5, 0.25), (0.5, 0.0), (0.8, 0.0)])
+def test_paper_scheme_extrapolates_to_the_solver(c, nu):
+    # The paper's piecewise-constant scheme at h = .02 ... .0025 (tol 1e-12, far below its
+    # discretisation error) converges at a drifting order (measured 1.2-1.4 for mu and
+    # ~1.1 for P* at c = .5; 0.8-0.9 for mu at c = .8, where h = .04 is not yet asymptotic
+    # and is left out). Aitken extrapolation of the three finest h is compared with the
+    # solver at level 3 (error < 1e-11, test 3). The extrapolation's own uncertainty is the
+    # change of the extrapolant when the finest h is dropped; agreement must lie within
+    # it. Measured (mu): |ext - ours| = 6e-7, 5e-7, 5.7e-6 against uncertainties 1.1e-6,
+    # 8e-7, 3e-5; (P*): 3.0e-6, 3.6e-6, 3.7e-6 against 4.0e-6, 5.3e-6, 6.2e-6.
+    sols = [solve_friction(c, nu, h=h, tol=1e-12) for h in SCHEME_H]
+    ours = flat_punch(nu=nu, c=c, level=3)
+    for name, ref in (("mu", ours.mu), ("compliance", ours.compliance)):
+        values = np.array([getattr(s, name) for s in sols])
+        ext, order = _aitken(values)
+        ext_coarse, _ = _aitken(values[:-1])
+        uncertainty = abs(ext - ext_coarse)
+        assert 0.5 < order < 2.0, (name, order)  # a convergent sequence, or Aitken is meaningless
+        assert uncertainty < 5e-5, (name, uncertainty)  # the comparison has teeth: <= 1.5x measured
+        assert abs(ext - ref) <= uncertainty, (name, ext - ref, uncertainty)
+        # and the scheme itself is no closer at its finest h than its extrapolant
+        assert abs(ext - ref) < abs(values[-1] - ref), name
+
+
+# ---------------------------------------------------------------------------------------
+# 3. Self-convergence and the error estimate
+# ---------------------------------------------------------------------------------------
+
+ROUNDING = 1e-13  # ~100 eps of quantities of order 1-10: differences below this are noise
+
+SELF_CONVERGENCE_POINTS = [
+    (0.05, 0.49),
+    (0.05, -0.5),
+    (0.5, 0.0),
+    (0.98, 0.49),
+    pytest.param(
+        0.98, -0.5,
+        marks=pytest.mark.xfail(
+            strict=True,
+            reason="solver defect (reported): at c = .98, nu = -.5 (mu = 13.57, mu gamma = 9, "
+            "alpha = .465) the levels stagnate: |L_k - L4| in mu = 2e-4, 5.7e-6, 2.1e-6, 2.5e-6 "
+            "for k = 0..3; level 3 claims error 3.8e-7 but differs from level 4 by 2.5e-6; "
+            "modest mesh changes (kmax 26 at level 3) return spurious roots mu = .985 that violate (2.8)",
+        ),
+    ),
+]
+
+
+@pytest.mark.parametrize("c, nu", SELF_CONVERGENCE_POINTS)
+def test_levels_converge_and_error_bounds_the_true_error(c, nu):
+    g = _gamma(nu)
+    fields = [solve_mu(c, g, LEVELS[k]) for k in range(5)]
+    mus = np.array([f.mu for f in fields])
+    ps = np.array([f.compliance for f in fields])
+    dist = np.maximum(np.abs(mus - mus[4]), np.abs(ps - ps[4]))  # distance of level k from level 4
+    # Exponential convergence: each level at least 10x closer to level 4 than the one
+    # before, until rounding (measured: factors 25-1000 over these points).
+    for k in range(2):
+        assert dist[k + 1] <= max(dist[k] / 10, ROUNDING), dist
+    # The public error of level 2 (|L2 - L1|) must bound its true error. Level 4 is a
+    # valid reference only if it is far more accurate than the bound: |L3 - L4| < 1% of
+    # the estimate (measured <= 1e-2 of it), so |L2 - L4| is the true error to 1%.
+    s = flat_punch(nu=nu, c=c, level=2)
+    assert s.mu == mus[2] and s.compliance == ps[2]
+    assert dist[3] <= max(0.01 * s.error, ROUNDING), (dist[3], s.error)
+    assert dist[2] + dist[3] <= s.error, (dist[2], s.error)
+
+
+# ---------------------------------------------------------------------------------------
+# 4. Small gamma: (2.28) with an O(gamma^2) correction
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("c", [0.3, 0.5, 0.9])
+def test_small_gamma_limit_is_approached_like_gamma_squared(c):
+    # (2.28) checked first against mpmath (atanh(c)/(c K'(c)), K'(c) = K(m = 1 - c^2)).
+    with mpmath.workdps(30):
+        f0_mp = mpmath.atanh(c) / (c * mpmath.ellipk(1 - mpmath.mpf(c) ** 2))
+    f0 = float(mu_over_gamma(c))
+    assert f0 == pytest.approx(float(f0_mp), rel=1e-14)
+    # mu/gamma = f0 + f2 gamma^2 + O(gamma^4), f2 > 0 (reformulation.md). Measured f2
+    # estimates (c = .5): .2862, .2790, .2773, .2768; log-log slopes 2.037, 2.009, 2.002,
+    # their distance from 2 shrinking 4x per halving (the gamma^4 term). Solver error
+    # (~1e-10 in mu, so 4e-9 in mu/gamma at gamma = .025) is 1e-5 of the smallest deviation.
+    gammas = np.array([0.2, 0.1, 0.05, 0.025])
+    deviation = np.array([flat_punch(gamma=g, c=c).mu / g - f0 for g in gammas])
+    assert np.all(deviation > 0.0)
+    slopes = np.diff(np.log(deviation)) / np.diff(np.log(gammas))
+    assert abs(slopes[-1] - 2.0) < 0.01, slopes  # measured worst 0.0034 (c = .9)
+    assert np.all(np.abs(np.diff(np.abs(slopes - 2.0))) > 0)  # and the approach to 2 is monotone
+    f2 = deviation / gammas**2
+    steps = np.abs(np.diff(f2))
+    assert np.all(steps[1:] < steps[:-1] / 3), f2  # Cauchy at the gamma^2 rate (measured 4x)
+
+
+# ---------------------------------------------------------------------------------------
+# 5. The constraints (2.8)-(2.9) and the local structure at x = c
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("c, nu", [(0.5, 0.25), (0.24, 0.0), (0.9, -0.5), (0.98, 0.49)])
+def test_constraints_and_continuity(c, nu):
+    s = flat_punch(nu=nu, c=c)
+    near = np.logspace(-3, -12, 10)
+    x_stick = np.concatenate([np.linspace(0.0, c, 2001)[:-1], c - near])
+    x_slip = np.concatenate([np.linspace(c, 1.0, 2001)[1:-1], c + near, 1.0 - near])
+    p_stick, q_stick = s.pressure(x_stick), s.shear(x_stick)
+    p_slip, q_slip = s.pressure(x_slip), s.shear(x_slip)
+    # (2.8) stick: mu p - q >= 0 (measured min 1.2e-7 at c - 1e-12, where it tends to 0)
+    assert np.all(s.mu * p_stick - q_stick >= 0.0)
+    # (2.8) slip: q = mu p (to rounding of the product)
+    np.testing.assert_allclose(q_slip, s.mu * p_slip, rtol=1e-15, atol=0)
+    # (2.9): u <= 0 on the slip annulus (measured max -4e-19, at c + 1e-12)
+    assert np.all(s.slip(x_slip) <= 0.0)
+    assert np.all(s.slip(x_stick) == 0.0)
+    assert np.all(p_stick > 0.0) and np.all(p_slip > 0.0)
+    # Local analysis (reformulation.md): mu p - q ~ (c - x)^(1/2 - alpha), tan pi alpha =
+    # mu gamma. Log-log slope between c - 1e-7 and c - 1e-9; measured |slope - (1/2 - alpha)|
+    # <= 1.2e-4; 1e-3 still separates alpha's of different mu (e.g. alpha = .019 vs .033).
+    alpha = math.atan(s.mu * s.gamma) / math.pi
+    d = np.array([1e-7, 1e-9])
+    phi = s.mu * s.pressure(c - d) - s.shear(c - d)
+    slope = math.log(phi[0] / phi[1]) / math.log(d[0] / d[1])
+    assert abs(slope - (0.5 - alpha)) < 1e-3, (slope, 0.5 - alpha)
+    # Continuity at c with the (c - x)^(1/2 - alpha) kink: a jump over 2 delta is
+    # O(delta^(1/2 - alpha)) (measured <= 1.6 (2 delta)^(1/2 - alpha), at nu = -.5), while a
+    # wrong eigenvalue would leave a (c - x)^(-1/2 - alpha) singularity. Bound: 10x.
+    delta = 1e-9
+    scale = 10 * (2 * delta) ** (0.5 - alpha) * s.pressure(c)
+    assert abs(s.pressure(c + delta) - s.pressure(c - delta)) < scale
+    assert abs(s.shear(c + delta) - s.shear(c - delta)) < scale
+
+
+# ---------------------------------------------------------------------------------------
+# 6. Monotonicity in mu (Shield & Anderson, §2.1) and the inverse problem
+# ---------------------------------------------------------------------------------------
+
+
+def test_compliance_and_stick_radius_increase_with_mu():
+    # 1 < P* < atanh(gamma)/gamma (B4), both strictly increasing in mu (§2.1, Fig. 4).
+    # Level 1 (error ~1e-8) is enough: consecutive P* differ by >= 4e-3.
+    nu = 0.25
+    g = _gamma(nu)
+    mus = [0.1, 0.15, 0.2, 0.3, 0.5, 0.8]
+    sols = [flat_punch(nu=nu, mu=m, level=1) for m in mus]
+    compliance = np.array([s.compliance for s in sols])
+    c = np.array([s.c for s in sols])
+    assert np.all(compliance > 1.0) and np.all(compliance < math.atanh(g) / g)
+    assert np.all(np.diff(compliance) > 0.0) and np.all(np.diff(c) > 0.0)
+    assert np.all((c > 0.0) & (c < 1.0))
+
+
+@pytest.mark.parametrize(
+    "nu, mu",
+    [(0.25, 0.2), (0.0, 0.3), (0.25, 0.05), (0.0, 0.05)],  # mu = .05: c = 3.5e-3 and 4.4e-5
+)
+def test_inverse_problem_returns_the_requested_mu(nu, mu):
+    # The returned solution is the forward solve at the returned c, so its mu must be the
+    # requested one to the level's accuracy: level 2 reaches ~1e-10 in mu (test 3; measured
+    # |L2 - L4| <= 2.5e-11), so 1e-9 relative. Measured: 7e-14, 6e-13.
+    s = flat_punch(nu=nu, mu=mu, level=2)
+    assert abs(s.mu / mu - 1.0) < 1e-9, s.mu
+
+
+def test_no_eigenvalue_beyond_the_largest_stick_radius_raises_quickly():
+    # gamma = .74 (nu = -.92): no mu <= 1e4 gives c = .98. Measured 0.75 s; 10 s says
+    # "does not hang" with room for a loaded CI machine.
+    start = time.perf_counter()
+    with pytest.raises(NoEigenvalueError):
+        flat_punch(gamma=0.74, c=0.98)
+    assert time.perf_counter() - start < 10.0
+
+
+# ---------------------------------------------------------------------------------------
+# 7. The paper's mu-c table
+# ---------------------------------------------------------------------------------------
+
+PAPER_MU = {k: v[0] for k, v in PAPER["mu_inverse_A"].items() if v[0] is not None}
+MISPRINT = (0.25, 0.5)  # errata item 3: printed .1801, the scheme gives .18104
+
+
+def _paper_accuracy(c: float, nu: float) -> float:
+    """The paper's accuracy in mu: its scheme's error at h = .02 (estimated from the scheme
+    alone, |mu(.02) - Aitken limit of mu(.02 ... .0025)|, 1e-5 - 4e-4 here), plus 5e-5 for
+    printing to 4 decimals and 1e-5 for its regula falsi tolerance (§4.1)."""
+    mus = np.array([solve_friction(c, nu, h=h, tol=1e-12).mu for h in SCHEME_H])
+    return abs(mus[0] - _aitken(mus)[0]) + 5e-5 + 1e-5
+
+
+@pytest.mark.parametrize("key", [k for k in PAPER_MU if k != MISPRINT])
+def test_paper_mu_table_within_the_papers_accuracy(key):
+    # Measured |paper - ours| / accuracy: .68, .71, .51, .79, .48, .29 (worst: c = .8, nu = 0).
+    nu, c = key
+    ours = flat_punch(nu=nu, c=c).mu
+    assert abs(PAPER_MU[key] - ours) <= _paper_accuracy(c, nu)
+
+
+def test_paper_mu_misprint_is_detected():
+    # .1801 is 1.0e-3 from ours, 7x the paper's accuracy (1.4e-4); .1810 (the paper's scheme
+    # at h = .02 is .18104) lies within it (1.2e-4).
+    nu, c = MISPRINT
+    ours = flat_punch(nu=nu, c=c).mu
+    accuracy = _paper_accuracy(c, nu)
+    assert abs(PAPER_MU[MISPRINT] - ours) > 5 * accuracy
+    assert abs(0.1810 - ours) <= accuracy
+
+
+# ---------------------------------------------------------------------------------------
+# 8. Round trip and broadcasting
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("c, nu", [(0.5, 0.0), (0.2, 0.3)])
+def test_round_trip(c, nu):
+    # c -> mu -> c. The inversion solves for logit(c) by Brent (xtol 1e-11) then one Newton
+    # step at the same level, so c returns to ~1e-11 at worst; measured 1.8e-13, 1.2e-12.
+    assert stick_radius(friction_coefficient(c, nu), nu) == pytest.approx(c, abs=1e-11)
+
+
+def test_broadcasting():
+    c = np.array([[0.3], [0.6]])
+    nu = np.array([0.0, 0.25])
+    mu = friction_coefficient(c, nu)
+    assert isinstance(mu, np.ndarray) and mu.shape == (2, 2)
+    for i in range(2):
+        for j in range(2):
+            assert mu[i, j] == flat_punch(nu=nu[j], c=c[i, 0]).mu  # the same computation
+    assert np.all(np.diff(mu, axis=0) > 0)  # larger c needs more friction
+    radii = stick_radius(np.array([0.2, 0.3]), 0.25)
+    assert isinstance(radii, np.ndarray) and radii.shape == (2,)
+    assert isinstance(friction_coefficient(0.5, 0.0), float)
+
+
+# ---------------------------------------------------------------------------------------
+# 9. Bad input
+# ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda: flat_punch(nu=0.7, mu=0.3), r"\bnu\b"),
+        (lambda: flat_punch(nu=float("nan"), mu=0.3), r"\bnu\b"),
+        (lambda: flat_punch(nu=0.25, mu=-1.0), r"\bmu\b"),
+        (lambda: flat_punch(nu=0.25, c=0.0), r"\bc \("),
+        (lambda: flat_punch(nu=0.25, c=1.5), r"\bc \("),
+        (lambda: flat_punch(nu=0.25, mu=0.3, c=0.5), "exactly one of mu"),
+        (lambda: flat_punch(nu=0.25), "exactly one of mu"),
+        (lambda: flat_punch(nu=0.25, gamma=0.3, c=0.5), "exactly one of nu"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=0), "level"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=9), "level"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=1).pressure(1.5), r"\bx\b"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=1).shear(-0.1), r"\bx\b"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=1).slip(float("nan")), r"\bx\b"),
+        (lambda: friction_coefficient(0.0, 0.25), r"\bc \("),
+        (lambda: stick_radius(-1.0, 0.25), r"\bmu\b"),
+    ],
+)
+def test_bad_input_raises_value_error_naming_the_argument(call, name):
+    with pytest.raises(ValueError, match=name):
+        call()
+
+
+# ---------------------------------------------------------------------------------------
+# 10. Dissimilar bodies
+# ---------------------------------------------------------------------------------------
+
+
+def test_dissimilar_bodies_through_gamma():
+    # Body 1 (G = 1, nu = 0) on body 2 (G = 1, nu = 1/2): gamma_bar = (1/2)/(3/2) = 1/3,
+    # the gamma of a single body with nu = 1/4 ((2.2) footnote). Same gamma to the last bit
+    # (1/3 rounds the same way), hence the same computation and equal results.
+    g = gamma_dissimilar(1.0, 0.0, 1.0, 0.5)
+    assert g == _gamma(0.25)
+    by_gamma, by_nu = flat_punch(gamma=g, c=0.5), flat_punch(nu=0.25, c=0.5)
+    assert by_gamma.nu is None and by_nu.nu == 0.25 and by_gamma.gamma == by_nu.gamma
+    assert (by_gamma.mu, by_gamma.compliance) == (by_nu.mu, by_nu.compliance)
+    assert flat_punch(gamma=g, mu=0.2).c == flat_punch(nu=0.25, mu=0.2).c

@@ -175,11 +175,22 @@ def _error_estimate(fields: list[FlatField]) -> float:
     return diffs[0]
 
 
+#: Largest stick radius the solver is asked for; beyond it the answer is bracketed (flat_punch).
+C_TOP = 1.0 - 1e-9
+
+
 def _first_order_stick_radius(mu: float, gamma: float) -> float:
-    """Invert the small-gamma law (2.28), mu/gamma = atanh(c)/(c K'(c)), for c."""
+    """Invert the small-gamma law (2.28), mu/gamma = atanh(c)/(c K'(c)), for c (capped at C_TOP)."""
     target = mu / gamma
-    g = lambda s: math.log(float(mu_over_gamma(1.0 / (1.0 + math.exp(-s))))) - math.log(target)  # noqa: E731
-    return 1.0 / (1.0 + math.exp(-optimize.brentq(g, -60.0, 36.0, xtol=1e-12)))
+    g = lambda s: math.log(float(mu_over_gamma(_expit(s)))) - math.log(target)  # noqa: E731
+    top = _logit(C_TOP)
+    if g(top) <= 0.0:
+        return C_TOP
+    return _expit(optimize.brentq(g, -60.0, top, xtol=1e-12))
+
+
+class _AboveTop(Exception):
+    """mu exceeds mu_c(C_TOP): the stick radius lies in (C_TOP, 1]."""
 
 
 def _logit(c: float) -> float:
@@ -197,9 +208,7 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float) -> tuple
     evaluations: dict[float, FlatField] = {}
 
     def g(s: float) -> float:
-        c = _expit(s)
-        if c > 1.0 - 1e-12:
-            return math.inf  # treated as beyond reach: see the NoEigenvalueError below
+        c = min(_expit(s), C_TOP)
         try:
             field = solve_mu(c, gamma, LEVELS[level], mu_guess=mu)
         except NoEigenvalueError:
@@ -221,8 +230,8 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float) -> tuple
         lo, g_lo, hi = hi, g_hi, hi + 2 * step
         step *= 2
         g_hi = g(hi)
-        if hi > 28:
-            raise NoEigenvalueError(f"the stick radius for mu = {mu}, gamma = {gamma:.6g} is not below 1 - 1e-12")
+        if hi >= _logit(C_TOP):
+            raise _AboveTop()
     root = optimize.brentq(g, lo, hi, xtol=1e-11)
     field = evaluations.get(root) or solve_mu(_expit(root), gamma, LEVELS[level], mu_guess=mu)
     near = sorted((s for s in evaluations if s != root), key=lambda s: abs(s - root))[0]
@@ -249,8 +258,8 @@ def _invert(mu: float, gamma: float, level: int) -> tuple[FlatField, FlatField]:
         while True:
             s_new = s_old + step
             try:
-                if _expit(s_new) > 1.0 - 1e-12:
-                    raise NoEigenvalueError("stick radius within 1e-12 of 1")
+                if _expit(s_new) > C_TOP:
+                    raise NoEigenvalueError("stick radius above C_TOP")
                 new = solve_mu(_expit(s_new), gamma, LEVELS[level], mu_guess=mu)
                 break
             except NoEigenvalueError:
@@ -328,9 +337,38 @@ def flat_punch(
         return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
     if g == 0.0:
         return _closed_form(nu_value, g, mu_value, 1.0, False, "gamma = 0: no coupling, no slip")
-    fine, coarse = _invert(mu_value, g, level)
+    try:
+        fine, coarse = _invert(mu_value, g, level)
+    except _AboveTop:
+        return _near_full_stick(nu_value, g, mu_value, level)
     error = max(abs(fine.c - coarse.c), abs(fine.compliance - coarse.compliance))
     return _from_field(nu_value, fine, level, error)
+
+
+def _near_full_stick(nu, gamma: float, mu: float, level: int) -> FlatPunchSolution:
+    """mu > mu_c(C_TOP): by monotonicity in mu (c and P* increase, §2.1), C_TOP < c <= 1 and
+    P*(C_TOP) < P* <= P0*; return the midpoints with half-widths (plus the solver's error
+    at C_TOP) as the error, and the adhesive closed-form stresses (exact outside the slip
+    annulus of width < 1 - C_TOP only in the limit)."""
+    edge = solve_mu(C_TOP, gamma, LEVELS[level], mu_guess=mu)
+    edge_coarse = solve_mu(C_TOP, gamma, LEVELS[level - 1], mu_guess=mu)
+    if edge.mu > mu:  # the coarse search overshot: not in the near-full-stick regime after all
+        raise SolverError(f"stick radius for mu = {mu}, gamma = {gamma:.6g} not bracketed below {C_TOP}")
+    adhesive = float(compliance_adhesive(gamma))
+    solver_error = abs(edge.compliance - edge_coarse.compliance)
+    breakpoints = ADHESIVE_EDGE_BREAKPOINTS.copy()
+    breakpoints.setflags(write=False)
+    return FlatPunchSolution(
+        nu=nu,
+        gamma=gamma,
+        mu=mu,
+        c=0.5 * (1.0 + C_TOP),
+        compliance=0.5 * (adhesive + edge.compliance),
+        error=max(0.5 * (1.0 - C_TOP), 0.5 * abs(adhesive - edge.compliance) + solver_error),
+        route=f"bracketed: mu > mu_c({C_TOP}) = {edge.mu:.6g}, so {C_TOP} < c <= 1; adhesive stresses (App. B)",
+        breakpoints=breakpoints,
+        _field=_ClosedForm(gamma, True),
+    )
 
 
 def _broadcast(f, *args) -> np.ndarray | float:

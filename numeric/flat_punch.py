@@ -46,6 +46,7 @@ __all__ = ["FlatPunchSolution", "flat_punch", "stick_radius", "friction_coeffici
 
 DEFAULT_LEVEL = 2
 ADHESIVE_EDGE_BREAKPOINTS = np.concatenate([[0.0, 0.5], 1.0 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])
+ADHESIVE_EDGE_BREAKPOINTS.setflags(write=False)  # smooth pieces of the closed forms, graded toward x = 1
 
 
 def _check_x(x: ArrayLike) -> np.ndarray:
@@ -147,9 +148,8 @@ class FlatPunchSolution:
 
 def _closed_form(nu, gamma: float, mu: float, c: float, adhesive: bool, why: str) -> FlatPunchSolution:
     compliance = float(compliance_adhesive(gamma)) if adhesive else 1.0  # (B4) or frictionless
-    breakpoints = ADHESIVE_EDGE_BREAKPOINTS.copy()
-    breakpoints.setflags(write=False)
-    return FlatPunchSolution(nu, gamma, mu, c, compliance, 0.0, f"closed form ({why})", breakpoints, _ClosedForm(gamma, adhesive))
+    return FlatPunchSolution(nu, gamma, mu, c, compliance, 0.0, f"closed form ({why})", ADHESIVE_EDGE_BREAKPOINTS,
+                             _ClosedForm(gamma, adhesive))
 
 
 def _from_field(nu, fine: FlatField, level: int, error: float) -> FlatPunchSolution:
@@ -356,8 +356,6 @@ def _near_full_stick(nu, gamma: float, mu: float, level: int) -> FlatPunchSoluti
         raise SolverError(f"stick radius for mu = {mu}, gamma = {gamma:.6g} not bracketed below {C_TOP}")
     adhesive = float(compliance_adhesive(gamma))
     solver_error = abs(edge.compliance - edge_coarse.compliance)
-    breakpoints = ADHESIVE_EDGE_BREAKPOINTS.copy()
-    breakpoints.setflags(write=False)
     return FlatPunchSolution(
         nu=nu,
         gamma=gamma,
@@ -366,7 +364,7 @@ def _near_full_stick(nu, gamma: float, mu: float, level: int) -> FlatPunchSoluti
         compliance=0.5 * (adhesive + edge.compliance),
         error=max(0.5 * (1.0 - C_TOP), 0.5 * abs(adhesive - edge.compliance) + solver_error),
         route=f"bracketed: mu > mu_c({C_TOP}) = {edge.mu:.6g}, so {C_TOP} < c <= 1; adhesive stresses (App. B)",
-        breakpoints=breakpoints,
+        breakpoints=ADHESIVE_EDGE_BREAKPOINTS,
         _field=_ClosedForm(gamma, True),
     )
 

@@ -37,10 +37,11 @@ from scipy import optimize
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
-from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
+from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu, resolve_gamma
 
 from .discretize import LEVELS
 from .eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
+from .eigen_table import table_available, table_friction_coefficient, table_stick_radius
 
 __all__ = ["FlatPunchSolution", "flat_punch", "stick_radius", "friction_coefficient", "NoEigenvalueError", "SolverError"]
 
@@ -234,37 +235,70 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float) -> tuple
             raise _AboveTop()
     root = optimize.brentq(g, lo, hi, xtol=1e-11)
     field = evaluations.get(root) or solve_mu(_expit(root), gamma, LEVELS[level], mu_guess=mu)
-    near = sorted((s for s in evaluations if s != root), key=lambda s: abs(s - root))[0]
-    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (near - root)
+    # slope from the nearest evaluation at a different c (s beyond C_TOP is clamped to it)
+    near = min((s for s in evaluations if evaluations[s].c != field.c), key=lambda s: abs(s - root))
+    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (_logit(evaluations[near].c) - _logit(field.c))
     return field, slope
 
 
-def _invert(mu: float, gamma: float, level: int) -> tuple[FlatField, FlatField]:
-    """Fine and coarse solutions with mu_c(c) = mu.
+def _table_start(mu: float, gamma: float) -> tuple[float, float] | None:
+    """c from the Chebyshev table and d(log mu)/d(logit c) there, or None outside its domain."""
+    if not table_available():
+        return None
+    c = float(table_stick_radius(mu, gamma))
+    if math.isnan(c):
+        return None
+    s = _logit(c)
+    pair = table_friction_coefficient(1.0 / (1.0 + np.exp(-np.array([s - 1e-4, s + 1e-4]))), np.array(gamma))
+    if np.any(np.isnan(pair)):
+        return None
+    return c, float(np.log(pair[1] / pair[0]) / 2e-4)
 
-    Brent on the coarse level; then secant steps in logit(c) on the fine level, starting
-    with the coarse slope, until the fine mu matches to 1e-11 relative (usually 2 solves:
-    the levels differ by the coarse level's error, so the steps are tiny). 1e-11 sits
-    above the noise of mu(c) at fixed resolution (~1e-12 relative, measured) and below
-    the accuracy of the fine levels.
+
+def _invert(mu: float, gamma: float, level: int) -> tuple[FlatField, float]:
+    """The fine solution with mu_c(c) = mu and the error of its c.
+
+    The start is the Chebyshev table's c (``numeric.eigen_table``) or, outside the table,
+    Brent on the coarse level. Then secant steps in logit(c) on the fine level until the
+    fine mu matches to 1e-11 relative (usually 1-2 solves, the start being that close) or c
+    stops moving in double precision (near c = 1, where adjacent doubles change mu by more).
+    1e-11 sits above the noise of mu(c) at fixed resolution (~1e-12 relative, measured)
+    and below the accuracy of the fine levels. The error of c is the coarse level's
+    mismatch in mu at the final c, converted to c by the slope, or the coarse c's distance.
     """
-    coarse, slope = _invert_coarse(mu, gamma, level - 1, _first_order_stick_radius(mu, gamma))
-    s_old, field = _logit(coarse.c), solve_mu(coarse.c, gamma, LEVELS[level], mu_guess=mu)
+    start = _table_start(mu, gamma)
+    coarse = None
+    if start is None:
+        coarse, slope = _invert_coarse(mu, gamma, level - 1, _first_order_stick_radius(mu, gamma))
+        c_start = coarse.c
+    else:
+        c_start, slope = start
+    s_old, field = _logit(c_start), solve_mu(c_start, gamma, LEVELS[level], mu_guess=mu)
     g_old = math.log(field.mu) - math.log(mu)
     for _ in range(8):
         if abs(g_old) < 1e-11:
-            return field, coarse
+            if coarse is None:
+                check = solve_mu(field.c, gamma, LEVELS[level - 1], mu_guess=mu)
+                dc = abs(math.log(check.mu / mu) / slope) * field.c * (1.0 - field.c)  # d c = c (1-c) d logit
+                return field, max(dc, abs(check.compliance - field.compliance))
+            return field, max(abs(field.c - coarse.c), abs(field.compliance - coarse.compliance))
         step = -g_old / slope
         while True:
             s_new = s_old + step
             try:
                 if _expit(s_new) > C_TOP:
-                    raise NoEigenvalueError("stick radius above C_TOP")
+                    if solve_mu(C_TOP, gamma, LEVELS[level], mu_guess=mu).mu < mu:
+                        raise _AboveTop()  # mu increases with c: the stick radius is above C_TOP
+                    raise NoEigenvalueError("step beyond C_TOP")
                 new = solve_mu(_expit(s_new), gamma, LEVELS[level], mu_guess=mu)
                 break
             except NoEigenvalueError:
                 step /= 4.0  # overshot beyond the largest stick radius: shorten the step
         g_new = math.log(new.mu) - math.log(mu)
+        if abs(new.c - field.c) <= 4 * np.spacing(new.c):  # c cannot move further in doubles
+            field, g_new = (new, g_new) if abs(g_new) < abs(g_old) else (field, g_old)
+            g_old = 0.0
+            continue
         if g_new != g_old:
             slope = (g_new - g_old) / (s_new - s_old)
         s_old, g_old, field = s_new, g_new, new
@@ -338,10 +372,9 @@ def flat_punch(
     if g == 0.0:
         return _closed_form(nu_value, g, mu_value, 1.0, False, "gamma = 0: no coupling, no slip")
     try:
-        fine, coarse = _invert(mu_value, g, level)
+        fine, error = _invert(mu_value, g, level)
     except _AboveTop:
         return _near_full_stick(nu_value, g, mu_value, level)
-    error = max(abs(fine.c - coarse.c), abs(fine.compliance - coarse.compliance))
     return _from_field(nu_value, fine, level, error)
 
 
@@ -375,8 +408,27 @@ def _broadcast(f, *args) -> np.ndarray | float:
     return out[()] if out.ndim == 0 else out
 
 
-def stick_radius(mu: ArrayLike, nu: ArrayLike, *, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+def _tabulated_or_solved(table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool) -> np.ndarray | float:
+    """Evaluate ``table`` on all points at once; solve the points outside its domain one by one."""
+    a, n = np.broadcast_arrays(np.asarray(first, dtype=float), np.asarray(nu, dtype=float))
+    shape = a.shape
+    a, n = a.ravel(), n.ravel()
+    g = np.asarray(gamma_from_nu(n), dtype=float)
+    out = np.array(table(a, g), dtype=float) if use_table and table_available() else np.full(a.shape, np.nan)
+    missing = np.isnan(out)
+    if np.any(missing):
+        out[missing] = _broadcast(solve, a[missing], n[missing])
+    out = out.reshape(shape)
+    return float(out) if out.ndim == 0 else out
+
+
+def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
+
+    Inside the table's domain (``numeric.eigen_table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
+    comes from the Chebyshev table of the eigenvalue relation (microseconds a point, error
+    ``numeric._eigen_table.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
+    ``use_table=False``, from ``flat_punch`` at ``level``.
 
     Examples
     --------
@@ -385,11 +437,17 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, level: int = DEFAULT_LEVEL) ->
     """
     check_mu(mu)
     check_nu(nu)
-    return _broadcast(lambda m, n: flat_punch(nu=n, mu=m, level=level).c, mu, nu)
+    return _tabulated_or_solved(table_stick_radius, lambda m, n: flat_punch(nu=n, mu=m, level=level).c, mu, nu,
+                                use_table)
 
 
-def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
-    """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays."""
+def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True,
+                         level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+    """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays.
+
+    From the Chebyshev table inside its domain, else from ``flat_punch`` (see ``stick_radius``).
+    """
     check_c(c)
     check_nu(nu)
-    return _broadcast(lambda cc, n: flat_punch(nu=n, c=cc, level=level).mu, c, nu)
+    return _tabulated_or_solved(table_friction_coefficient, lambda cc, n: flat_punch(nu=n, c=cc, level=level).mu, c,
+                                nu, use_table)

@@ -29,7 +29,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -339,8 +339,9 @@ def flat_punch(
     NoEigenvalueError
         If no friction coefficient gives the requested c (large gamma, c near 1).
     SolverError
-        If the solver does not converge (stick radii below ~1e-4, i.e. mu well below
-        gamma / log(4e4), (2.29); handled by the asymptotic forms in a later release).
+        If even level 1 does not converge. Where the requested level fails (stick radii
+        below ~1e-4, mu well below gamma / log(4e4), (2.29)) the next coarser level is used
+        and ``route`` says so.
 
     Examples
     --------
@@ -360,10 +361,7 @@ def flat_punch(
             return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
         if g == 0.0:
             return _closed_form(nu_value, g, 0.0, c_value, False, "gamma = 0: no coupling, mu = 0 (2.28)")
-        fields = [solve_mu(c_value, g, LEVELS[level]), solve_mu(c_value, g, LEVELS[level - 1])]
-        if fields[0].mu * g > 1.0 and level >= 2:  # alpha > 1/4: convergence can stall, look one level further
-            fields.append(solve_mu(c_value, g, LEVELS[level - 2]))
-        return _from_field(nu_value, fields[0], level, _error_estimate(fields))
+        return _with_fallback(lambda lv: _solve_given_c(nu_value, c_value, g, lv), level)
     mu_value = float(check_mu(mu))
     if mu_value == 0.0:
         return _closed_form(nu_value, g, 0.0, 0.0, False, "frictionless, (2.26)")
@@ -371,11 +369,34 @@ def flat_punch(
         return _closed_form(nu_value, g, math.inf, 1.0, True, "adhesive, App. B")
     if g == 0.0:
         return _closed_form(nu_value, g, mu_value, 1.0, False, "gamma = 0: no coupling, no slip")
+    return _with_fallback(lambda lv: _solve_given_mu(nu_value, mu_value, g, lv), level)
+
+
+def _with_fallback(solve, level: int) -> FlatPunchSolution:
+    """``solve(level)``, or, where the level does not converge (very small c), the next coarser
+    level with the route saying so; the error estimate is then that level's own."""
     try:
-        fine, error = _invert(mu_value, g, level)
+        return solve(level)
+    except SolverError:
+        if level <= 1:
+            raise
+        sol = _with_fallback(solve, level - 1)
+        return replace(sol, route=f"{sol.route} (level {level} did not converge)")
+
+
+def _solve_given_c(nu, c: float, gamma: float, level: int) -> FlatPunchSolution:
+    fields = [solve_mu(c, gamma, LEVELS[level]), solve_mu(c, gamma, LEVELS[level - 1])]
+    if fields[0].mu * gamma > 1.0 and level >= 2:  # alpha > 1/4: convergence can stall, look one level further
+        fields.append(solve_mu(c, gamma, LEVELS[level - 2]))
+    return _from_field(nu, fields[0], level, _error_estimate(fields))
+
+
+def _solve_given_mu(nu, mu: float, gamma: float, level: int) -> FlatPunchSolution:
+    try:
+        fine, error = _invert(mu, gamma, level)
     except _AboveTop:
-        return _near_full_stick(nu_value, g, mu_value, level)
-    return _from_field(nu_value, fine, level, error)
+        return _near_full_stick(nu, gamma, mu, level)
+    return _from_field(nu, fine, level, error)
 
 
 def _near_full_stick(nu, gamma: float, mu: float, level: int) -> FlatPunchSolution:

@@ -387,9 +387,12 @@ def _with_fallback(solve, level: int) -> FlatPunchSolution:
 
 
 def _solve_given_c(nu, c: float, gamma: float, level: int) -> FlatPunchSolution:
-    fields = [solve_mu(c, gamma, LEVELS[level]), solve_mu(c, gamma, LEVELS[level - 1])]
+    # the table's mu (5.6e-11) centres the LU: the Krylov root is then local, no second LU
+    guess = float(table_friction_coefficient(c, gamma)[0]) if table_available() else math.nan
+    guess = None if math.isnan(guess) else guess
+    fields = [solve_mu(c, gamma, LEVELS[lv], mu_guess=guess) for lv in (level, level - 1)]
     if fields[0].mu * gamma > 1.0 and level >= 2:  # alpha > 1/4: convergence can stall, look one level further
-        fields.append(solve_mu(c, gamma, LEVELS[level - 2]))
+        fields.append(solve_mu(c, gamma, LEVELS[level - 2], mu_guess=guess))
     return _from_field(nu, fields[0], level, _error_estimate(fields))
 
 

@@ -203,7 +203,9 @@ def test_levels_converge_and_error_bounds_the_true_error(c, nu):
     # valid reference only if it is far more accurate than the bound: |L3 - L4| < 1% of
     # the estimate (measured <= 1e-2 of it), so |L2 - L4| is the true error to 1%.
     s = flat_punch(nu=nu, c=c, level=2)
-    assert s.mu == mus[2] and s.compliance == ps[2]
+    # the same level-2 problem; the API starts its root finder from the table's mu, so the
+    # roots agree to the finder's 1e-14 relative tolerance rather than bit for bit
+    assert s.mu == pytest.approx(mus[2], rel=1e-13) and s.compliance == pytest.approx(ps[2], rel=1e-13)
     assert dist[3] <= max(0.01 * s.error, ROUNDING), (dist[3], s.error)
     assert dist[2] + dist[3] <= s.error, (dist[2], s.error)
 

@@ -35,6 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy import special
 
+from .arrays import scalar_or_array
 from .materials import check_gamma, kappa_from_gamma
 
 __all__ = [
@@ -52,10 +53,6 @@ __all__ = [
     "sphere_A_adhesive",
     "sphere_C_adhesive",
 ]
-
-
-def _scalar(arr: np.ndarray) -> np.ndarray | float:
-    return arr[()] if arr.ndim == 0 else arr
 
 
 def _atanh_over(gamma: np.ndarray) -> np.ndarray:
@@ -76,7 +73,7 @@ def compliance_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     1.09861228867
     """
     g = check_gamma(gamma)
-    return _scalar(_atanh_over(g))  # (B4)
+    return scalar_or_array(_atanh_over(g))  # (B4)
 
 
 def central_pressure_adhesive(gamma: ArrayLike) -> np.ndarray | float:
@@ -91,14 +88,14 @@ def central_pressure_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     """
     g = check_gamma(gamma)
     kappa = np.asarray(kappa_from_gamma(g))
-    return _scalar((2.0 / np.pi) * _atanh_over(g) * np.cosh(0.5 * np.pi * kappa))  # (4.10)
+    return scalar_or_array((2.0 / np.pi) * _atanh_over(g) * np.cosh(0.5 * np.pi * kappa))  # (4.10)
 
 
 def shear_slope_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     """Limit of q0(x)/x at the centre of the adhesive flat punch, kappa p0(0)/2, [S75] (4.10)."""
     g = check_gamma(gamma)
     kappa = np.asarray(kappa_from_gamma(g))
-    return _scalar(0.5 * kappa * np.asarray(central_pressure_adhesive(g)))  # (4.10)
+    return scalar_or_array(0.5 * kappa * np.asarray(central_pressure_adhesive(g)))  # (4.10)
 
 
 # Gauss-Legendre rule on (0, pi/2) for the (B3) integrals; 160 nodes reach 1e-14
@@ -164,12 +161,12 @@ def pressure_adhesive(x: ArrayLike, gamma: float) -> np.ndarray | float:
     >>> round(float(pressure_adhesive(0.0, 0.5)), 12)
     0.807595599478
     """
-    return _scalar(_b3(x, gamma)[0])
+    return scalar_or_array(_b3(x, gamma)[0])
 
 
 def shear_adhesive(x: ArrayLike, gamma: float) -> np.ndarray | float:
     """Shear traction q0(x) of the adhesive flat punch, [S75] (B3); q0(0) = 0."""
-    return _scalar(_b3(x, gamma)[1])
+    return scalar_or_array(_b3(x, gamma)[1])
 
 
 def _b3_mp(x, gamma, component: int, dps: int):
@@ -207,7 +204,7 @@ def shear_adhesive_mp(x, gamma, dps: int = 30):
 
 def sphere_central_pressure_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     """Central pressure of the adhesive sphere (n = 2), p(0) = 2 p0(0), [S75] (B6), (3.18)."""
-    return _scalar(2.0 * np.asarray(central_pressure_adhesive(gamma)))  # (B6)
+    return scalar_or_array(2.0 * np.asarray(central_pressure_adhesive(gamma)))  # (B6)
 
 
 def sphere_pressure_slope_adhesive(gamma: ArrayLike) -> np.ndarray | float:
@@ -220,7 +217,7 @@ def sphere_pressure_slope_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     """
     g = check_gamma(gamma)
     kappa = np.asarray(kappa_from_gamma(g))
-    return _scalar(-2.0 * np.asarray(central_pressure_adhesive(g)) * kappa * g)  # (B6)
+    return scalar_or_array(-2.0 * np.asarray(central_pressure_adhesive(g)) * kappa * g)  # (B6)
 
 
 def psi1(kappa: ArrayLike) -> np.ndarray | float:
@@ -242,7 +239,7 @@ def psi1(kappa: ArrayLike) -> np.ndarray | float:
         raise ValueError(f"kappa must not be NaN, got {kappa!r}")
     z = 0.25j * k
     value = 0.5 * (special.psi(1.0 + z) - special.psi(0.5 + z)).real
-    return _scalar(value)
+    return scalar_or_array(value)
 
 
 def psi1_mp(kappa, dps: int = 30):
@@ -264,7 +261,7 @@ def sphere_A_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     """
     g = check_gamma(gamma)
     kappa = np.asarray(kappa_from_gamma(g))
-    return _scalar(1.0 / (1.0 - kappa**2 * np.asarray(psi1(kappa))))  # (4.18)
+    return scalar_or_array(1.0 / (1.0 - kappa**2 * np.asarray(psi1(kappa))))  # (4.18)
 
 
 def sphere_C_adhesive(gamma: ArrayLike) -> np.ndarray | float:
@@ -277,4 +274,4 @@ def sphere_C_adhesive(gamma: ArrayLike) -> np.ndarray | float:
     g = check_gamma(gamma)
     kappa = np.asarray(kappa_from_gamma(g))
     kappa_sq_over = (2.0 / np.pi) * kappa * _atanh_over(g)  # kappa^2/gamma
-    return _scalar(-(2.0 / 3.0) * kappa_sq_over * np.sqrt(1.0 - g**2))  # (4.18)
+    return scalar_or_array(-(2.0 / 3.0) * kappa_sq_over * np.sqrt(1.0 - g**2))  # (4.18)

@@ -31,6 +31,7 @@ __all__ = [
     "check_mu",
     "check_c",
     "check_n",
+    "check_x",
     "resolve_gamma",
 ]
 
@@ -84,6 +85,14 @@ def check_n(n: float) -> float:
     if not value > 0.0 or math.isinf(value):
         raise ValueError(f"n (power-law exponent of the indenter) must be finite and > 0, got {n!r}")
     return value
+
+
+def check_x(x: ArrayLike) -> np.ndarray:
+    """Return ``x`` as a float array, raising ``ValueError`` unless 0 <= x <= 1 (radius over contact radius)."""
+    arr = _finite_array(x, "x")
+    if np.any((arr < 0.0) | (arr > 1.0)):
+        raise ValueError(f"x (radius over contact radius) must lie in [0, 1], got {x!r}")
+    return arr
 
 
 def gamma_from_nu(nu: ArrayLike) -> np.ndarray | float:

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
+from asymptotics.arrays import read_only
 from asymptotics.flat_punch import mu_over_gamma
 
 from .discretize import (
@@ -55,12 +56,6 @@ class NoEigenvalueError(RuntimeError):
 
 class SolverError(RuntimeError):
     """The solver did not converge at this resolution (e.g. c below ~1e-4 at fine levels)."""
-
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)
-    a.setflags(write=False)
-    return a
 
 
 @dataclass(frozen=True, slots=True)
@@ -338,7 +333,7 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None 
         _stick_p=_Piecewise.from_nodal(d.stick, P_st),
         _stick_q=_Piecewise.from_nodal(d.stick, Q_st),
         _slip_p=_Piecewise.from_nodal(d.slip, P_sl),
-        _slip_u_star=(d.slip, _frozen(u_star)),
+        _slip_u_star=(d.slip, read_only(u_star)),
     )
 
 
@@ -357,7 +352,7 @@ def _admissible(z: np.ndarray, mu: float, d: Discretisation) -> bool:
 
 def _breakpoints(groups: list[Elements]) -> np.ndarray:
     ends = np.concatenate([np.sqrt(g.anchor + g.lo) for g in groups] + [[1.0]])
-    return _frozen(np.unique(np.clip(ends, 0.0, 1.0)))
+    return read_only(np.unique(np.clip(ends, 0.0, 1.0)))
 
 
 def solve_adhesive(gamma: float, res: Resolution) -> FlatField:

@@ -37,7 +37,7 @@ from scipy import optimize
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
-from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu, resolve_gamma
+from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, resolve_gamma
 
 from .discretize import LEVELS
 from .eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
@@ -48,13 +48,6 @@ __all__ = ["FlatPunchSolution", "flat_punch", "stick_radius", "friction_coeffici
 DEFAULT_LEVEL = 2
 ADHESIVE_EDGE_BREAKPOINTS = np.concatenate([[0.0, 0.5], 1.0 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])
 ADHESIVE_EDGE_BREAKPOINTS.setflags(write=False)  # smooth pieces of the closed forms, graded toward x = 1
-
-
-def _check_x(x: ArrayLike) -> np.ndarray:
-    xs = np.asarray(x, dtype=float)
-    if np.any(np.isnan(xs)) or np.any((xs < 0.0) | (xs > 1.0)):
-        raise ValueError(f"x (radius over contact radius) must lie in [0, 1], got {x!r}")
-    return xs
 
 
 @dataclass(frozen=True, slots=True)
@@ -134,7 +127,7 @@ class FlatPunchSolution:
         return math.inf  # (1 - x)^(alpha - 1/2), alpha < 1/2
 
     def _at(self, x: ArrayLike, f, edge: float | None) -> np.ndarray | float:
-        xs = _check_x(x)
+        xs = check_x(x)
         flat = xs.ravel()
         out = np.empty(flat.shape)
         interior = flat < 1.0

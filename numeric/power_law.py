@@ -67,7 +67,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy import special
 
-from asymptotics.materials import check_n
+from asymptotics.arrays import scalar_or_array
+from asymptotics.materials import check_n, check_x
 
 from .flat_punch import DEFAULT_LEVEL, flat_punch
 
@@ -366,21 +367,9 @@ class _Flat:
         return n * up / x, n * uq / x  # (3.13): n x^(n-1) F = n (x^n F)/x
 
 
-# ------------------------------------------------------------------- validation
-def _check_x(x: ArrayLike) -> np.ndarray:
-    xs = np.asarray(x, dtype=float)
-    if np.any(np.isnan(xs)) or np.any((xs < 0.0) | (xs > 1.0)):
-        raise ValueError(f"x must lie in [0, 1], got {x!r}")
-    return xs
-
-
-def _scalar(arr: np.ndarray) -> np.ndarray | float:
-    return arr[()] if arr.ndim == 0 else arr
-
-
 def _evaluate(flat: FlatStresses, n: float, x: ArrayLike, component: int) -> np.ndarray | float:
     n = check_n(n)
-    xs = _check_x(x)
+    xs = check_x(x)
     prepared = _Flat(flat)
     values = xs.ravel()
     out = np.zeros(values.shape)
@@ -389,7 +378,7 @@ def _evaluate(flat: FlatStresses, n: float, x: ArrayLike, component: int) -> np.
         out[positive] = prepared.stresses(values[positive], n)[component]
     if np.any(~positive):
         out[~positive] = _centre_value(prepared, n, component)
-    return _scalar(out.reshape(xs.shape))
+    return scalar_or_array(out.reshape(xs.shape))
 
 
 def _centre_value(prepared: _Flat, n: float, component: int) -> float:
@@ -488,7 +477,7 @@ def w_n_scaled(n: float, s: ArrayLike) -> np.ndarray | float:
     big = s[~small]
     incomplete = special.betainc(0.5 * n, 0.5, big**2) * special.beta(0.5 * n, 0.5)
     out[~small] = 1.0 - 0.5 * n * incomplete / big**n
-    return _scalar(out)
+    return scalar_or_array(out)
 
 
 def _a_star(prepared: _Flat, n: float) -> float:

@@ -50,6 +50,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from asymptotics.arrays import read_only
 from asymptotics.flat_punch import mu_over_gamma
 from asymptotics.materials import check_c, resolve_gamma
 
@@ -69,12 +70,6 @@ __all__ = [
 ]
 
 
-def _frozen(values) -> np.ndarray:
-    arr = np.array(values, dtype=float)
-    arr.setflags(write=False)
-    return arr
-
-
 @dataclass(frozen=True, slots=True)
 class Mesh:
     """Nodes 0 = t_0 < ... < t_N = 1 of §4, with the stick radius at node ``stick_index`` (4.2)."""
@@ -83,7 +78,7 @@ class Mesh:
     stick_index: int
 
     def __post_init__(self) -> None:
-        nodes = _frozen(self.nodes)
+        nodes = read_only(self.nodes)
         if nodes.ndim != 1 or nodes.size < 4 or nodes[0] != 0.0 or nodes[-1] != 1.0:
             raise ValueError("nodes must be a 1-d array from 0 to 1 with at least 3 intervals")
         if np.any(np.diff(nodes) <= 0.0):
@@ -297,10 +292,10 @@ def solve_at_mu(mesh: Mesh, mu: float, nu: float | None = None, *, gamma: float 
         gamma=g,
         mu=float(mu),
         c=mesh.c,
-        pressure=_frozen(p),
-        shear=_frozen(x * s),
-        shear_density=_frozen(s),
-        slip=_frozen(slip),
+        pressure=read_only(p),
+        shear=read_only(x * s),
+        shear_density=read_only(s),
+        slip=read_only(slip),
         compliance=float(0.5 * np.pi * np.sum(mesh.widths * x * p)),  # (4.9)
         central_pressure=float(p[0]),
         mu_star=_extrapolate_to_c(mesh, ratio) if m < n else math.nan,
@@ -493,8 +488,8 @@ def sphere_from_flat(flat: SchemeSolution) -> SphereFit:
     alpha2 = float(-(e[n:] @ x_stick**2) / np.sum(x_stick**4))  # (4.17), paper's sign
     central = np.polyfit(x[:3], pressure[:3], 2)[::-1]
     return SphereFit(
-        pressure=_frozen(pressure),
-        shear=_frozen(x * density),
+        pressure=read_only(pressure),
+        shear=read_only(x * density),
         alpha0=float(alpha0),
         alpha1=alpha1,
         alpha2=alpha2,

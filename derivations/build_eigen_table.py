@@ -8,7 +8,7 @@ gamma -> 0) and of P* into Chebyshev coefficients, and checks the interpolant at
 points that are not grid points against fresh level-3 solves. Writes the generated module
 ``numeric/_eigen_table.py`` with the coefficients and the measured error.
 
-Run time: about 5 minutes on 2 cores.
+Run time: about 7 minutes on 2 cores.
 
     python derivations/build_eigen_table.py
 """
@@ -28,7 +28,7 @@ from numeric.eigen_table import _evaluate
 
 ROOT = Path(__file__).resolve().parents[1]
 C_MIN, C_MAX, GAMMA_MAX = 1e-3, 0.95, 2.0 / 3.0
-N_XI, N_ETA = 48, 20
+N_XI, N_ETA = 64, 22
 N_CHECK = 60
 
 

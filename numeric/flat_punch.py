@@ -380,7 +380,7 @@ def _with_fallback(solve, level: int) -> FlatPunchSolution:
 
 
 def _solve_given_c(nu, c: float, gamma: float, level: int) -> FlatPunchSolution:
-    # the table's mu (5.6e-11) centres the LU: the Krylov root is then local, no second LU
+    # the table's mu (7e-12, recorded at build) centres the LU: the Krylov root is then local, no second LU
     guess = float(table_friction_coefficient(c, gamma)[0]) if table_available() else math.nan
     guess = None if math.isnan(guess) else guess
     fields = [solve_mu(c, gamma, LEVELS[lv], mu_guess=guess) for lv in (level, level - 1)]

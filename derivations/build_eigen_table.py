@@ -84,7 +84,7 @@ def main() -> None:
         "GAMMA_MAX = " + repr(GAMMA_MAX),
         f"#: worst relative error of mu over {N_CHECK} random points against fresh level-3 solves",
         "MU_RELATIVE_ERROR = " + repr(float(f"{worst_mu:.2e}")),
-        f"#: worst absolute error of P* over the same points",
+        "#: worst absolute error of P* over the same points",
         "COMPLIANCE_ERROR = " + repr(float(f"{worst_p:.2e}")),
         "LOG_RATIO_COEFFICIENTS = [",
         *[f"    {[float(v) for v in row]!r}," for row in coef_mu],

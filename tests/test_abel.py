@@ -2,7 +2,6 @@
 
 import mpmath
 import numpy as np
-import pytest
 
 from numeric.abel import lower_abel_weights, upper_abel_weights
 

@@ -1,6 +1,5 @@
 """The Chebyshev table of the eigenvalue relation against fresh solves (numeric.eigen_table)."""
 
-import math
 import subprocess
 import sys
 from pathlib import Path

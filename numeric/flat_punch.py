@@ -36,6 +36,7 @@ from numpy.typing import ArrayLike
 from scipy import optimize
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
+from asymptotics.arrays import scalar_or_array
 from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, resolve_gamma
 
@@ -95,8 +96,8 @@ class FlatPunchSolution:
         Points in [0, 1] between which p and q are smooth (graded toward c and 1).
 
     Methods pressure(x), shear(x), slip(x) give p, q of (2.1) and u of (2.10) at
-    0 <= x <= 1 (vectorised); p and q are infinite at x = 1 only in the adhesive and
-    frictionless cases, u is 0 in the stick zone.
+    0 <= x <= 1 (vectorised); at the punch edge x = 1 the flat-punch stresses are infinite
+    ((1 - x)^(alpha - 1/2), alpha < 1/2; q is 0 without friction), and u is 0 in the stick zone.
     """
 
     nu: float | None
@@ -136,8 +137,7 @@ class FlatPunchSolution:
             out[~interior] = f(np.nextafter(1.0, 0.0) * np.ones((~interior).sum())) if np.any(~interior) else 0.0
         else:
             out[~interior] = edge
-        out = out.reshape(xs.shape)
-        return out[()] if out.ndim == 0 else out
+        return scalar_or_array(out.reshape(xs.shape))
 
 
 def _closed_form(nu, gamma: float, mu: float, c: float, adhesive: bool, why: str) -> FlatPunchSolution:

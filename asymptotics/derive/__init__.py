@@ -1,0 +1,1 @@
+"""SymPy derivations of [S75]; imported by ``asymptotics.registry`` only (they import SymPy)."""

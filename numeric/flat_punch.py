@@ -29,7 +29,11 @@ References
 from __future__ import annotations
 
 import math
+import sys
+import time
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -421,33 +425,60 @@ def _near_full_stick(nu, gamma: float, mu: float, level: int) -> FlatPunchSoluti
     )
 
 
-def _broadcast(f, *args) -> np.ndarray | float:
-    arrays = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
-    out = np.array([f(*vals) for vals in zip(*(a.ravel() for a in arrays))], dtype=float).reshape(arrays[0].shape)
-    return out[()] if out.ndim == 0 else out
+class Executor(Protocol):
+    """What a sweep can be handed to: ``concurrent.futures`` executors (threads or
+    processes) and ``dask.distributed.Client.get_executor()`` all provide this ``map``."""
+
+    def map(self, fn: Callable, *iterables: Iterable) -> Iterable: ...
 
 
-def _tabulated_or_solved(table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool) -> np.ndarray | float:
-    """Evaluate ``table`` on all points at once; solve the points outside its domain one by one."""
+def _solved_c(mu: float, nu: float, level: int) -> float:
+    return flat_punch(nu=nu, mu=mu, level=level).c
+
+
+def _solved_mu(c: float, nu: float, level: int) -> float:
+    return flat_punch(nu=nu, c=c, level=level).mu
+
+
+def _report(name: str, done: int, total: int, started: float) -> None:
+    rate = done / max(time.perf_counter() - started, 1e-9)
+    end = "\n" if done == total else ""
+    sys.stderr.write(f"\r{name}: {done}/{total} points solved, {rate:.3g} points/s{end}")
+    sys.stderr.flush()
+
+
+def _sweep(name: str, table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool, level: int,
+           executor: Executor | None, progress: bool) -> np.ndarray | float:
+    """Evaluate ``table`` on all points at once; solve the points outside its domain, one by
+    one or through ``executor``, reporting progress on stderr when asked."""
     a, n = np.broadcast_arrays(np.asarray(first, dtype=float), np.asarray(nu, dtype=float))
     shape = a.shape
     a, n = a.ravel(), n.ravel()
     g = np.asarray(gamma_from_nu(n), dtype=float)
     out = np.array(table(a, g), dtype=float) if use_table and table_available() else np.full(a.shape, np.nan)
-    missing = np.isnan(out)
-    if np.any(missing):
-        out[missing] = _broadcast(solve, a[missing], n[missing])
+    missing = np.flatnonzero(np.isnan(out))
+    if missing.size:
+        args = (a[missing], n[missing], [level] * missing.size)
+        results = executor.map(solve, *args) if executor is not None else map(solve, *args)
+        started = time.perf_counter()
+        for k, (index, value) in enumerate(zip(missing, results), 1):
+            out[index] = value
+            if progress:
+                _report(name, k, missing.size, started)
     out = out.reshape(shape)
     return float(out) if out.ndim == 0 else out
 
 
-def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int = DEFAULT_LEVEL,
+                 executor: Executor | None = None, progress: bool = False) -> np.ndarray | float:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
 
     Inside the table's domain (``numeric.eigen_table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
     comes from the Chebyshev table of the eigenvalue relation (microseconds a point, error
     ``numeric._eigen_table.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
-    ``use_table=False``, from ``flat_punch`` at ``level``.
+    ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
+    ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
+    with a progress line on stderr when ``progress`` is true.
 
     Examples
     --------
@@ -456,17 +487,16 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level:
     """
     check_mu(mu)
     check_nu(nu)
-    return _tabulated_or_solved(table_stick_radius, lambda m, n: flat_punch(nu=n, mu=m, level=level).c, mu, nu,
-                                use_table)
+    return _sweep("stick_radius", table_stick_radius, _solved_c, mu, nu, use_table, level, executor, progress)
 
 
-def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True,
-                         level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int = DEFAULT_LEVEL,
+                         executor: Executor | None = None, progress: bool = False) -> np.ndarray | float:
     """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays.
 
     From the Chebyshev table inside its domain, else from ``flat_punch`` (see ``stick_radius``).
     """
     check_c(c)
     check_nu(nu)
-    return _tabulated_or_solved(table_friction_coefficient, lambda cc, n: flat_punch(nu=n, c=cc, level=level).mu, c,
-                                nu, use_table)
+    return _sweep("friction_coefficient", table_friction_coefficient, _solved_mu, c, nu, use_table, level, executor,
+                  progress)

@@ -59,7 +59,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Protocol, runtime_checkable
 
@@ -618,16 +618,18 @@ class PowerLawSolution:
         Exponent of the profile (2: sphere, 1: cone).
     nu, gamma, mu, c : float
         As for the flat punch; c is the same as the flat punch's (§3.2).
-    A : float
-        Indentation constant, delta = A a^n / b^(n-1) (3.2), by the identity (*) above.
-    C : float
-        Stick-zone displacement constant, u = C x^n on (0, c) (3.4).
     compliance : float
         P* = n P0* / (n + 1) (3.17).
     error : float
         The flat punch's error estimate (c, mu, P0*).
     flat : FlatPunchSolution
         The flat-punch solution the stresses are computed from (3.13).
+    A : float
+        Indentation constant, delta = A a^n / b^(n-1) (3.2), by the identity (*) above;
+        computed on first access (a quadrature of the flat shear), then kept.
+    C : float
+        Stick-zone displacement constant, u = C x^n on (0, c) (3.4); computed on first
+        access, then kept.
     """
 
     n: float
@@ -635,11 +637,23 @@ class PowerLawSolution:
     gamma: float
     mu: float
     c: float
-    A: float
-    C: float
     compliance: float
     error: float
     flat: FlatStresses
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def A(self) -> float:
+        if "A" not in self._cache:
+            self._cache["A"] = indentation_constant(self.flat, self.n)
+        return self._cache["A"]
+
+    @property
+    def C(self) -> float:
+        if "C" not in self._cache:
+            plain = self.flat.c == 0.0 or self.flat.gamma == 0.0  # frictionless or uncoupled: u = 0 in the stick zone
+            self._cache["C"] = 0.0 if plain else displacement_constant(self.flat, self.n)
+        return self._cache["C"]
 
     def pressure(self, x: ArrayLike) -> np.ndarray | float:
         """Contact pressure p(x) by (3.13); p(1) = 0 (3.7)."""
@@ -671,15 +685,12 @@ def power_law(
     """
     n_value = check_n(n)
     flat = flat_punch(nu=nu, mu=mu, c=c, gamma=gamma, level=DEFAULT_LEVEL if level is None else level)
-    C = 0.0 if flat.c == 0.0 or (flat.gamma == 0.0) else displacement_constant(flat, n_value)
     return PowerLawSolution(
         n=n_value,
         nu=flat.nu,
         gamma=flat.gamma,
         mu=flat.mu,
         c=flat.c,
-        A=indentation_constant(flat, n_value),
-        C=C,
         compliance=power_law_compliance(flat, n_value),
         error=flat.error,
         flat=flat,

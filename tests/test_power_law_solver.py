@@ -5,6 +5,7 @@ solution is the solver's, and the checks are the structural identities of §3 an
 paper's numbers.
 """
 
+import importlib
 import math
 
 import numpy as np
@@ -78,3 +79,14 @@ def test_inverse_A_against_the_paper(key):
     assert inv_a == pytest.approx(PAPER["mu_inverse_A"][key][1], rel=6e-3)
     alpha1 = sphere_from_flat(solve_friction(c, nu)).alpha1
     assert alpha1 == pytest.approx(inv_a, abs=1e-3)
+
+
+def test_A_and_C_are_computed_on_first_access_and_kept(monkeypatch):
+    pl = importlib.import_module("numeric.power_law")
+    calls = []
+    real = pl.indentation_constant
+    monkeypatch.setattr(pl, "indentation_constant", lambda flat, n: calls.append(n) or real(flat, n))
+    h = pl.power_law(2, nu=0.25, c=0.5, level=1)
+    assert calls == []  # not computed when only c, mu, compliance are wanted
+    first = h.A
+    assert h.A == first and calls == [2.0]  # computed once, then reused

@@ -1,22 +1,355 @@
-"""The ``hertz-friction`` command line."""
+"""The ``hertz-friction`` command line.
+
+Subcommands: ``sphere``, ``punch``, ``cone``, ``power-law`` (a contact in SI units,
+``numeric.contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
+``figures``, ``bench`` and ``tables`` (the paper's tables). ``hertz-friction CMD --help``
+describes each.
+
+Exit codes: 0 success; 2 bad usage or bad input (argparse's convention; the message, naming
+the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``,
+``NoEigenvalueError``; for ``table``, any failed row, the others still being written).
+"""
 
 from __future__ import annotations
 
 import argparse
+import csv
+import io
+import json
+import math
 import sys
+
+_PREFIXES = {-12: "p", -9: "n", -6: "u", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
+_PHYSICAL = ("sphere", "punch", "cone", "power-law")
+
+
+def _si(value: float | None, unit: str) -> str:
+    """``value`` with an SI prefix and 6 significant digits, e.g. 1.7e-4 m -> '170 um'."""
+    if value is None or not math.isfinite(value):
+        return "infinite" if value is not None else "-"
+    if value == 0.0:
+        return f"0 {unit}"
+    exponent = max(-12, min(12, 3 * math.floor(math.log10(abs(value)) / 3)))
+    return f"{value / 10.0**exponent:.6g} {_PREFIXES[exponent]}{unit}"
+
+
+def _material_args(parser: argparse.ArgumentParser) -> None:
+    given = parser.add_mutually_exclusive_group(required=True)
+    given.add_argument("--load", type=float, metavar="P", help="normal force P, N")
+    given.add_argument("--approach", type=float, metavar="DELTA", help="approach delta of the two bodies, m")
+    modulus = parser.add_mutually_exclusive_group(required=True)
+    modulus.add_argument("--E", type=float, help="Young's modulus of the half-space, Pa")
+    modulus.add_argument("--G", type=float, help="shear modulus of the half-space, Pa")
+    parser.add_argument("--nu", type=float, required=True, help="Poisson's ratio of the half-space, in (-1, 1/2]")
+    parser.add_argument("--mu", type=float, required=True, help="Coulomb friction coefficient, >= 0 (inf: full stick)")
+    indenter = parser.add_mutually_exclusive_group()
+    indenter.add_argument("--indenter-E", type=float, metavar="E", help="Young's modulus of the indenter, Pa "
+                          "(default: rigid)")
+    indenter.add_argument("--indenter-G", type=float, metavar="G", help="shear modulus of the indenter, Pa")
+    parser.add_argument("--indenter-nu", type=float, metavar="NU", help="Poisson's ratio of the indenter "
+                        "(required with --indenter-E/--indenter-G)")
+    parser.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4),
+                        help="solver resolution level (default 2, ~1e-10; 3: ~1e-12, slower)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object (SI units) instead of text")
+
+
+def _build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="hertz-friction",
+        description="Hertz contact with finite friction (D. A. Spence, J. Elasticity 5 (1975) 297-319).",
+        epilog="Exit codes: 0 ok, 1 numerical failure, 2 bad usage or input.",
+    )
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    phys = "Press {what} into an elastic half-space with friction; SI units in and out (N, m, Pa)."
+    p = commands.add_parser("sphere", help="a sphere of radius R (Hertz)", description=phys.format(what="a sphere"))
+    p.add_argument("--radius", type=float, required=True, help="sphere radius R, m")
+    _material_args(p)
+    p = commands.add_parser("punch", help="a flat-ended punch of radius a",
+                            description=phys.format(what="a rigid flat punch"))
+    p.add_argument("--radius", type=float, required=True, help="punch radius a, m")
+    _material_args(p)
+    p = commands.add_parser("cone", help="a cone z = r cot(theta)", description=phys.format(what="a cone"))
+    p.add_argument("--semi-angle", type=float, required=True, metavar="DEG",
+                   help="semi-angle theta at the apex, degrees, in (45, 90) (e.g. 70.3: Berkovich-equivalent)")
+    _material_args(p)
+    p = commands.add_parser("power-law", help="a body z = k r^n or z = r^n/(n b^(n-1))",
+                            description=phys.format(what="a power-law body z = k r^n"))
+    p.add_argument("--n", type=float, required=True, help="exponent n > 0 (2: sphere, 1: cone)")
+    shape = p.add_mutually_exclusive_group(required=True)
+    shape.add_argument("--b", type=float, help="Spence's body length b, m: z = r^n/(n b^(n-1))")
+    shape.add_argument("--k", type=float, help="coefficient k, m^(1-n): z = k r^n")
+    _material_args(p)
+
+    p = commands.add_parser("solve", help="one dimensionless case: c, mu, P* (and A, C for z ~ r^n)",
+                            description="Solve the dimensionless problem of [S75] §2 (and §3 with --n).")
+    material = p.add_mutually_exclusive_group(required=True)
+    material.add_argument("--nu", type=float, help="Poisson's ratio, in (-1, 1/2]")
+    material.add_argument("--gamma", type=float, help="coupling constant (2.2) instead of nu (dissimilar bodies)")
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--mu", type=float, help="friction coefficient: find the stick radius c")
+    which.add_argument("--c", type=float, help="stick radius / contact radius: find mu")
+    p.add_argument("--n", type=float, help="also the power-law indenter z ~ r^n (2: sphere)")
+    p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4), help="solver level (default 2)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+
+    p = commands.add_parser(
+        "table", help="c and P* over ranges of mu and nu (CSV or JSON)",
+        description="Tabulate the stick radius c and the flat-punch compliance P0* (optionally the sphere's A) "
+                    "over mu and nu. A range is START:STOP:COUNT (inclusive, evenly spaced) or a comma list. "
+                    "Rows whose solve fails are written with an error status and the exit code is 1.")
+    p.add_argument("--mu", required=True, metavar="RANGE", help="friction coefficients, e.g. 0.1:1:10 or 0.1,0.3")
+    p.add_argument("--nu", required=True, metavar="RANGE", help="Poisson's ratios, e.g. 0,0.25,0.49")
+    p.add_argument("--format", choices=("csv", "json"), default="csv", help="output format (default csv)")
+    p.add_argument("--output", metavar="FILE", help="write to FILE instead of stdout")
+    p.add_argument("--sphere", action="store_true", help="add the sphere's A (3.2), C (3.4) and P* (3.17)")
+    p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4), help="solver level (default 2)")
+    p.add_argument("--progress", choices=("auto", "always", "never"), default="auto",
+                   help="row counter on stderr (auto: when stderr is a terminal)")
+
+    p = commands.add_parser("figures", help="write the figures (PNG/SVG)", description="Write the figures.")
+    p.add_argument("--output", default="figures", metavar="DIR", help="directory (default ./figures)")
+    p.add_argument("--format", action="append", choices=("png", "svg", "pdf"), dest="formats",
+                   help="file format, repeatable (default png)")
+    p.add_argument("--only", action="append", metavar="NAME", dest="names",
+                   help="only this figure (a key of numeric.figures.FIGURES), repeatable")
+
+    commands.add_parser("bench", help="the benchmark (arguments are passed on; bench --help for its own)",
+                        add_help=False)
+    commands.add_parser("tables", help="print the tables of Spence (1975) beside our recomputation and the exact values")
+    return parser
+
+
+def _elastic_bodies(args):
+    from .contact import elastic
+
+    half = elastic(E=args.E, G=args.G, nu=args.nu)
+    if args.indenter_E is None and args.indenter_G is None:
+        if args.indenter_nu is not None:
+            raise ValueError("indenter_nu needs --indenter-E or --indenter-G (the indenter is rigid by default)")
+        return half, None
+    if args.indenter_nu is None:
+        raise ValueError("indenter_nu (Poisson's ratio of the indenter) is required with --indenter-E/--indenter-G")
+    return half, elastic(E=args.indenter_E, G=args.indenter_G, nu=args.indenter_nu, prefix="indenter_")
+
+
+def _shape(args):
+    from .contact import FlatPunch, PowerLaw
+
+    if args.command == "sphere":
+        return PowerLaw.sphere(args.radius)
+    if args.command == "punch":
+        return FlatPunch(args.radius)
+    if args.command == "cone":
+        return PowerLaw.cone(math.radians(args.semi_angle))
+    if args.b is not None:
+        return PowerLaw.from_length(args.n, args.b)
+    return PowerLaw(args.n, args.k)
+
+
+def _run_physical(args) -> int:
+    from .contact import indent
+
+    half, indenter = _elastic_bodies(args)
+    contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
+                     level=args.level)
+    if args.json:
+        sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
+    else:
+        sys.stdout.write(_describe(contact))
+    return 0
+
+
+def _describe(s) -> str:
+    """The contact as a human-readable table with units."""
+    pair = s.materials
+    hs = pair.half_space
+    body = "rigid" if pair.indenter is None else \
+        f"elastic (E = {_si(pair.indenter.E, 'Pa')}, nu = {pair.indenter.nu:g})"
+    lines = [
+        f"{s.shape.description}, {body}, on a half-space E = {_si(hs.E, 'Pa')}, nu = {hs.nu:g}; mu = {s.mu:g}",
+        f"reduced modulus E* = {_si(pair.reduced_modulus, 'Pa')}, gamma = {pair.gamma:.6g} (= Dundurs beta; "
+        f"CONTACT: G = {_si(pair.kalker.G, 'Pa')}, nu = {pair.kalker.nu:.6g}, K = {pair.kalker.K:.6g})",
+        "",
+    ]
+    ref = s.frictionless if s.frictionless is not None else s
+    ratios = s.ratios
+
+    def at(value, where):
+        if where is None or value == 0.0:
+            return _si(value, "Pa")
+        return f"{_si(value, 'Pa')} at r = {_si(where, 'm')}"
+
+    rows = [
+        ("contact radius a", _si(s.contact_radius, "m"), _si(ref.contact_radius, "m"), ratios["contact_radius"]),
+        ("stick radius c a", _si(s.stick_radius, "m"), _si(ref.stick_radius, "m"), None),
+        ("approach delta", _si(s.approach, "m"), _si(ref.approach, "m"), ratios["approach"]),
+        ("load P", _si(s.load, "N"), _si(ref.load, "N"), ratios["load"]),
+        ("stiffness dP/d delta", _si(s.stiffness, "N/m"), _si(ref.stiffness, "N/m"), ratios["stiffness"]),
+        ("mean pressure", _si(s.mean_pressure, "Pa"), _si(ref.mean_pressure, "Pa"), None),
+        ("max pressure", at(s.max_pressure, s.max_pressure_radius), at(ref.max_pressure, ref.max_pressure_radius),
+         ratios["max_pressure"]),
+        ("max shear", at(s.max_shear, s.max_shear_radius), at(ref.max_shear, ref.max_shear_radius), None),
+    ]
+    width = max(len(r[1]) for r in rows) + 3
+    lines.append(f"{'':24}{'with friction':{width}}{'frictionless':{width}}ratio")
+    for name, value, reference, ratio in rows:
+        lines.append(f"{name:24}{value:{width}}{reference:{width}}{'' if ratio is None else f'{ratio:.6g}'}")
+    lines += ["", f"stick fraction c = {s.c:.9g}, P* = {s.compliance:.9g} (flat punch P0* = {s.flat_compliance:.9g})"
+              + ("" if s.A is None else f", A = {s.A:.9g}"),
+              f"route: {s.route}; estimated error {s.error:.1e}"]
+    return "\n".join(lines) + "\n"
+
+
+def _run_solve(args) -> int:
+    from . import flat_punch, power_law
+
+    if args.n is None:
+        sol, law = flat_punch(nu=args.nu, gamma=args.gamma, mu=args.mu, c=args.c, level=args.level), None
+    else:
+        law = power_law(args.n, nu=args.nu, gamma=args.gamma, mu=args.mu, c=args.c, level=args.level)
+        sol = law.flat
+    result = {"nu": sol.nu, "gamma": sol.gamma, "mu": sol.mu, "c": sol.c, "compliance": sol.compliance,
+              "error": sol.error, "route": sol.route}
+    if law is not None:
+        result.update({"n": law.n, "A": law.A, "C": law.C, "power_law_compliance": law.compliance})
+    if args.json:
+        sys.stdout.write(json.dumps({k: _json_value(v) for k, v in result.items()}, allow_nan=False) + "\n")
+        return 0
+    material = f"nu = {sol.nu:g} (gamma = {sol.gamma:.9g})" if sol.nu is not None else f"gamma = {sol.gamma:.9g}"
+    out = [f"{material}, mu = {sol.mu:.9g}",
+           f"stick radius / contact radius c = {sol.c:.9g}",
+           f"flat-punch compliance P0* = {sol.compliance:.9g}   (P = 4 G a P* delta / (1 - nu), (2.4))"]
+    if law is not None:
+        out += [f"power law n = {law.n:g}: A = {law.A:.9g} (delta = A a^n / b^(n-1), (3.2)), C = {law.C:.9g} (3.4), "
+                f"P* = {law.compliance:.9g} (3.17)"]
+    out.append(f"route: {sol.route}; estimated error {sol.error:.1e}")
+    sys.stdout.write("\n".join(out) + "\n")
+    return 0
+
+
+def _json_value(value):
+    return None if isinstance(value, float) and not math.isfinite(value) else value
+
+
+def _parse_range(text: str, name: str) -> list[float]:
+    """START:STOP:COUNT (inclusive, evenly spaced) or a comma-separated list."""
+    try:
+        if ":" in text:
+            start, stop, count = text.split(":")
+            n = int(count)
+            if n < 1:
+                raise ValueError
+            a, b = float(start), float(stop)
+            # 12 significant digits: 0.1:0.5:3 gives 0.3, not 0.30000000000000004
+            return [a] if n == 1 else [float(f"{a + (b - a) * i / (n - 1):.12g}") for i in range(n)]
+        return [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ValueError(f"{name} must be START:STOP:COUNT or a comma list of numbers, got {text!r}") from None
+
+
+def _run_table(args) -> int:
+    from asymptotics.materials import check_mu, check_nu
+
+    from . import NoEigenvalueError, SolverError, flat_punch, power_law
+
+    mus = _parse_range(args.mu, "mu")
+    nus = _parse_range(args.nu, "nu")
+    if not mus or not nus:
+        raise ValueError("mu and nu need at least one value each")
+    for m in mus:
+        check_mu(m)
+    for v in nus:
+        check_nu(v)
+    show = args.progress == "always" or (args.progress == "auto" and sys.stderr.isatty())
+    total = len(mus) * len(nus)
+    rows, failed = [], 0
+    for nu in nus:
+        for mu in mus:
+            row = {"nu": nu, "gamma": None, "mu": mu, "c": None, "compliance": None, "error": None, "route": None}
+            if args.sphere:
+                row.update({"sphere_A": None, "sphere_C": None, "sphere_compliance": None})
+            try:
+                if args.sphere:
+                    law = power_law(2, nu=nu, mu=mu, level=args.level)
+                    sol = law.flat
+                    row.update({"sphere_A": law.A, "sphere_C": law.C, "sphere_compliance": law.compliance})
+                else:
+                    sol = flat_punch(nu=nu, mu=mu, level=args.level)
+                row.update({"gamma": sol.gamma, "c": sol.c, "compliance": sol.compliance, "error": sol.error,
+                            "route": sol.route})
+                row["status"] = "ok"
+            except (SolverError, NoEigenvalueError) as err:
+                failed += 1
+                row["status"] = f"failed: {err}"
+            rows.append(row)
+            if show:
+                sys.stderr.write(f"\rtable: {len(rows)}/{total} rows")
+                sys.stderr.flush()
+    if show:
+        sys.stderr.write("\n")
+    text = _format_rows(rows, args.format)
+    if args.output:
+        with open(args.output, "w", encoding="utf-8", newline="") as handle:
+            handle.write(text)
+    else:
+        sys.stdout.write(text)
+    if failed:
+        sys.stderr.write(f"hertz-friction table: {failed} of {total} rows failed (status column)\n")
+        return 1
+    return 0
+
+
+def _format_rows(rows: list[dict], fmt: str) -> str:
+    if fmt == "json":
+        return json.dumps([{k: _json_value(v) for k, v in r.items()} for r in rows], indent=1, allow_nan=False) + "\n"
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+    writer.writeheader()
+    for r in rows:
+        writer.writerow({k: "" if v is None else (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
+    return buffer.getvalue()
+
+
+def _run_figures(args) -> int:
+    from .figures import write_figures
+
+    paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names)
+    for path in paths:
+        sys.stdout.write(f"{path}\n")
+    return 0
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Entry point of the ``hertz-friction`` console script."""
-    parser = argparse.ArgumentParser(prog="hertz-friction", description=__doc__)
-    commands = parser.add_subparsers(dest="command", required=True)
-    commands.add_parser("tables", help="print the tables of Spence (1975) beside our recomputation and the exact values")
-    args = parser.parse_args(argv)
+    """Entry point of the ``hertz-friction`` console script; returns the exit code."""
+    from .eigen import NoEigenvalueError, SolverError
+
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["bench"]:  # everything after "bench" belongs to the benchmark's own parser
+        from .bench import main as bench_main
+
+        try:
+            return bench_main(argv[1:])
+        except SystemExit as exc:  # its --help or a usage error
+            return exc.code if isinstance(exc.code, int) else 2
+    parser = _build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --help (0) or a usage error (2); argparse has printed the message
+        return exc.code if isinstance(exc.code, int) else 2
     if args.command == "tables":
         from .paper_tables import render
 
         sys.stdout.write(render() + "\n")
-    return 0
+        return 0
+    run = {"solve": _run_solve, "table": _run_table, "figures": _run_figures}.get(args.command, _run_physical)
+    try:
+        return run(args)
+    except ValueError as err:
+        sys.stderr.write(f"hertz-friction {args.command}: error: {err}\n")
+        return 2
+    except (SolverError, NoEigenvalueError) as err:
+        sys.stderr.write(f"hertz-friction {args.command}: numerical failure: {err}\n")
+        return 1
 
 
 if __name__ == "__main__":

@@ -1,0 +1,883 @@
+"""Run time against error of every method for the flat punch and the sphere ([S75] §2, §3, §4).
+
+Measures, for the cases nu in {0, 0.25, 0.45} x c in {0.1, 0.5, 0.9} plus the fully
+adhesive case c = 1 for each nu, every method at every resolution it offers:
+
+* the paper's scheme ``numeric.spence1975`` ([S75] §4): ``solve_friction`` on the friction
+  mesh of §4.1 with coarse width h = 0.04 ... 0.0025 (N ~ 30 ... 460 intervals; h = 0.02 is
+  the paper's), ``solve_adhesive`` on uniform meshes N = 25 ... 800 (N = 50 is the paper's
+  mesh (ii)) and on the graded meshes (iii), (iv); the sphere's A by ``sphere_from_flat``
+  ((4.13)-(4.17));
+* our solver ``numeric.flat_punch`` at levels 1-4 (mu, P*, p(0) for given c; c for given
+  mu), at c = 1 the discrete adhesive solver ``numeric.eigen.solve_adhesive`` (``flat_punch``
+  itself returns the closed form there, also listed); A by ``indentation_constant`` on the
+  flat solution (what ``power_law(2, ...).A`` computes);
+* the Chebyshev table route (``friction_coefficient``, ``stick_radius``,
+  ``numeric.eigen_table.table_compliance``);
+* the asymptotic formulas of ``asymptotics.flat_punch``: (2.28) and its inverse, the
+  first-order compliance (2.34), the first-order central pressure (2.32)-(2.33), (2.36) at
+  c = 1, and the second-order law of ``asymptotics.second_order`` where that module exists.
+
+Errors are relative, |value - reference| / |reference|. References: the closed forms of
+App. B at c = 1 ((B4), (4.10), (4.18)); for 0 < c < 1 our solver's finest level 4, whose
+own error is bounded by its distance to level 3 and cross-checked against the paper's
+scheme Aitken-extrapolated in h (an independent discretisation). The stick radius for
+given mu is asked for at mu = mu_ref(c), so its reference is the case's c.
+
+Run time: the median over repeated runs (until ``budget`` seconds or ``max_runs`` runs;
+calls under 1 ms are looped so that one run lasts about 2 ms), after one untimed warm-up
+call. The setup cost is measured separately: the first call with every ``functools`` cache
+of ``numeric`` and ``asymptotics`` cleared, against later calls. The paper's scheme caches
+its collocation matrix per (mesh, gamma), i.e. per case; that cache is cleared before each
+timed run, so its run time is that of a case not solved before, as it is for our solver,
+whose caches (reference meshes and Abel blocks per level, Gauss rules, the table) do not
+depend on c or gamma.
+
+    python -m numeric.bench            # writes derivations/benchmark.md and .png (minutes)
+    python -m numeric.bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
+
+On a shared machine set ``OPENBLAS_NUM_THREADS=1``: threaded BLAS under load was measured
+3-6 times slower.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import math
+import os
+import statistics
+import sys
+import time
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from asymptotics import flat_punch as asymptotic_flat_punch
+from asymptotics.adhesive import central_pressure_adhesive, compliance_adhesive, sphere_A_adhesive
+from asymptotics.materials import gamma_from_nu
+
+from . import eigen, spence1975
+from .discretize import LEVELS
+from .eigen_table import table_compliance
+from .flat_punch import flat_punch, friction_coefficient, stick_radius
+from .power_law import indentation_constant, power_law
+
+__all__ = [
+    "Case",
+    "Config",
+    "Row",
+    "Reference",
+    "Setup",
+    "CrossCheck",
+    "Headline",
+    "Benchmark",
+    "FULL",
+    "QUICK",
+    "median_time",
+    "clear_caches",
+    "reference",
+    "measure_case",
+    "run",
+    "time_to_reach",
+    "best_error_within",
+    "headline",
+    "render",
+    "plot",
+    "main",
+]
+
+# method names (also the legend of the plot)
+SCHEME = "paper's scheme (§4)"
+SCHEME_GRADED = "paper's scheme, graded meshes (iii), (iv)"
+SOLVER = "our solver"
+CLOSED_FORM = "flat_punch at c = 1 (closed form)"
+TABLE = "Chebyshev table"
+ASYMPTOTIC = "asymptotic formulas"
+METHODS = (SCHEME, SCHEME_GRADED, SOLVER, CLOSED_FORM, TABLE, ASYMPTOTIC)
+
+QUANTITIES = ("mu", "c", "P*", "p(0)", "A")
+QUANTITY_TEXT = {
+    "mu": "mu for given c",
+    "c": "c for given mu (mu = reference mu of the case)",
+    "P*": "compliance P* (2.4)",
+    "p(0)": "central pressure p(0)",
+    "A": "sphere's A (3.2)",
+}
+
+PUBLISHED_H = 0.02  # the paper's friction mesh (§4.1)
+PUBLISHED_N = 50  # the paper's uniform adhesive mesh (ii) (§4)
+TARGET = 1e-10  # accuracy asked of our solver in the headline
+
+
+@dataclass(frozen=True, slots=True)
+class Case:
+    """Poisson's ratio and stick radius (c = 1: fully adhesive)."""
+
+    nu: float
+    c: float
+
+    @property
+    def gamma(self) -> float:
+        return float(gamma_from_nu(self.nu))
+
+    @property
+    def adhesive(self) -> bool:
+        return self.c == 1.0
+
+    @property
+    def label(self) -> str:
+        return f"nu={self.nu:g}, c={self.c:g}"
+
+
+@dataclass(frozen=True, slots=True)
+class Config:
+    """What to measure: cases, resolutions, method families and the timing budget."""
+
+    cases: tuple[Case, ...]
+    scheme_h: tuple[float, ...] = (0.04, 0.02, 0.01, 0.005, 0.0025)
+    scheme_n: tuple[int, ...] = (25, 50, 100, 200, 400, 800)
+    graded_meshes: tuple[str, ...] = ("iii", "iv")
+    levels: tuple[int, ...] = (1, 2, 3, 4)
+    methods: frozenset[str] = frozenset({"scheme", "solver", "table", "asymptotic"})
+    setup: bool = True
+    budget: float = 0.5
+    max_runs: int = 5
+
+
+FULL = Config(cases=tuple(Case(nu, c) for nu in (0.0, 0.25, 0.45) for c in (0.1, 0.5, 0.9, 1.0)))
+QUICK = Config(
+    cases=(Case(0.25, 0.5), Case(0.25, 1.0)),
+    scheme_h=(0.04, 0.02, 0.01, 0.005),
+    scheme_n=(25, 50, 100, 200),
+    graded_meshes=(),
+    budget=0.2,
+    max_runs=3,
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Row:
+    """One measured value: a method at one resolution, for one case and quantity."""
+
+    nu: float
+    c: float
+    quantity: str
+    method: str
+    resolution: str
+    size: int  # intervals N of the paper's scheme, unknowns of our solver, 0 otherwise
+    rank: float  # orders the resolutions of a method, coarse to fine
+    value: float
+    reference: float
+    seconds: float
+    published: bool = False  # the paper's own resolution (h = 0.02, N = 50)
+    is_reference: bool = False  # the row is the reference itself (our level 4 at 0 < c < 1)
+
+    @property
+    def error(self) -> float:
+        """Relative error |value - reference| / |reference|."""
+        return abs(self.value - self.reference) / abs(self.reference)
+
+
+@dataclass(frozen=True, slots=True)
+class Reference:
+    """Reference values of one case and what they rest on.
+
+    ``spread`` is the largest relative difference between our levels 4 and 3 over mu, P*,
+    p(0), A (0 for the closed forms): an upper estimate of the level-4 error, the levels
+    converging exponentially.
+    """
+
+    case: Case
+    mu: float
+    compliance: float
+    central_pressure: float
+    A: float
+    basis: str
+    spread: float
+
+    def value(self, quantity: str) -> float:
+        return {"mu": self.mu, "c": self.case.c, "P*": self.compliance, "p(0)": self.central_pressure,
+                "A": self.A}[quantity]
+
+
+@dataclass(frozen=True, slots=True)
+class Setup:
+    """First call with every cache cleared against later calls of the same case."""
+
+    case: Case
+    method: str
+    resolution: str
+    first: float
+    repeat: float
+
+
+@dataclass(frozen=True, slots=True)
+class CrossCheck:
+    """The paper's scheme Aitken-extrapolated in h against the level-4 reference."""
+
+    case: Case
+    quantity: str
+    extrapolated: float
+    uncertainty: float  # change of the extrapolant when the finest h is dropped
+    order: float  # observed order log2 of the ratio of successive differences
+    reference: float
+
+
+@dataclass(frozen=True, slots=True)
+class Headline:
+    """Our solver at ``target`` against the paper's scheme at its published resolution.
+
+    Times are medians over the cases, errors the worst over the cases; ``ratio`` is the
+    median over the cases of (our time)/(paper's time). ``paper_error_in_our_time``: the
+    best error of the paper's scheme among its resolutions that run within our time;
+    ``our_error_in_paper_time``: the same for our solver within the paper's time (None
+    when no level runs that fast); ``table_*``: the table route (None where not offered);
+    ``paper_slope``: median over the cases of the least-squares slope s of log(error) against
+    log(time) of the paper's scheme (error ~ time^-s), and ``paper_extrapolated_seconds``
+    the median time at which that line reaches ``target`` (an extrapolation, not a run).
+    """
+
+    quantity: str
+    cases: int
+    target: float
+    our_seconds: float
+    our_levels: tuple[str, ...]
+    paper_seconds: float
+    paper_error: float
+    ratio: float
+    ratio_range: tuple[float, float]
+    paper_error_in_our_time: float | None
+    our_error_in_paper_time: float | None
+    our_fastest_seconds: float
+    table_seconds: float | None
+    table_error: float | None
+    paper_slope: float
+    paper_extrapolated_seconds: float
+
+
+@dataclass(frozen=True, slots=True)
+class Benchmark:
+    config: Config
+    references: tuple[Reference, ...]
+    rows: tuple[Row, ...]
+    setups: tuple[Setup, ...]
+    checks: tuple[CrossCheck, ...]
+    seconds: float
+    machine: dict = field(default_factory=dict)
+
+
+# --------------------------------------------------------------------------------- timing
+def median_time(call: Callable[[], object], *, before: Callable[[], object] | None = None, budget: float = 0.5,
+                max_runs: int = 5, warm: bool = False) -> float:
+    """Median seconds per call of ``call()`` over runs until ``budget`` seconds or ``max_runs`` runs
+    (at least one run).
+
+    The first call calibrates: calls shorter than 1 ms are repeated within a run so that a
+    run lasts about 2 ms (not with ``before``). It counts as a run only if ``warm`` (the
+    caller has made a warm-up call already) and it is not repeated. ``before`` (untimed)
+    runs before each call, e.g. to clear a cache.
+    """
+    if before is not None:
+        before()
+    t0 = time.perf_counter()
+    call()
+    first = time.perf_counter() - t0
+    inner = 1 if before is not None or first >= 1e-3 else max(1, int(2e-3 / max(first, 1e-7)))
+    times: list[float] = [first] if warm and inner == 1 else []
+    total = sum(times)
+    while not times or (len(times) < max_runs and total < budget):
+        if before is not None:
+            before()
+        t0 = time.perf_counter()
+        for _ in range(inner):
+            call()
+        elapsed = time.perf_counter() - t0
+        times.append(elapsed / inner)
+        total += elapsed
+    return statistics.median(times)
+
+
+def clear_caches() -> tuple[str, ...]:
+    """Clear every ``functools`` cache in the loaded ``numeric`` and ``asymptotics`` modules.
+
+    Returns the qualified names of the caches cleared (sorted)."""
+    names = []
+    for name, module in sorted(sys.modules.items()):
+        if module is None or not (name.startswith("numeric.") or name.startswith("asymptotics.")):
+            continue
+        for attr, obj in vars(module).items():
+            if callable(getattr(obj, "cache_clear", None)) and getattr(obj, "__module__", None) == name:
+                obj.cache_clear()
+                names.append(f"{name}.{attr}")
+    return tuple(sorted(names))
+
+
+def _timed(call: Callable[[], object], config: Config, before: Callable[[], object] | None = None,
+           value: object = None):
+    """The value of one warm-up call (unless ``value`` is known already) and the median time of later ones."""
+    if value is None:
+        if before is not None:
+            before()
+        value = call()
+    return value, median_time(call, before=before, budget=config.budget, max_runs=config.max_runs, warm=True)
+
+
+# ----------------------------------------------------------------------------- references
+def reference(case: Case) -> Reference:
+    """Reference values of ``case``: App. B closed forms at c = 1, else our level 4 (see module doc)."""
+    return _reference_and_solutions(case)[0]
+
+
+def _reference_and_solutions(case: Case) -> tuple[Reference, dict]:
+    """The reference and the flat solutions of levels 4 and 3 it was computed from (none at c = 1)."""
+    g = case.gamma
+    if case.adhesive:
+        return Reference(case, math.inf, float(compliance_adhesive(g)), float(central_pressure_adhesive(g)),
+                         float(sphere_A_adhesive(g)), "closed forms (B4), (4.10), (4.18)", 0.0), {}
+    fine, coarse = (flat_punch(nu=case.nu, c=case.c, level=level) for level in (4, 3))
+
+    def values(s) -> np.ndarray:
+        return np.array([s.mu, s.compliance, float(s.pressure(0.0)), indentation_constant(s, 2)])
+
+    v4, v3 = values(fine), values(coarse)
+    spread = float(np.max(np.abs(v4 - v3) / np.abs(v4)))
+    return Reference(case, *map(float, v4), "our solver, level 4", spread), {4: fine, 3: coarse}
+
+
+# ---------------------------------------------------------------------------- measurement
+def _rows(case: Case, ref: Reference, method: str, resolution: str, size: int, rank: float,
+          values: dict[str, tuple[float, float]], published: bool = False, is_reference: bool = False) -> list[Row]:
+    return [Row(case.nu, case.c, q, method, resolution, size, rank, float(v), ref.value(q), t, published,
+                is_reference and q != "c") for q, (v, t) in values.items()]
+
+
+def _scheme_tol(h: float) -> float:
+    """Regula falsi tolerance of the paper's scheme: its 1e-5 at h = 0.02, scaled like h^3 so that
+    it stays below the discretisation error (order ~1.2 in h) on every finer mesh."""
+    return 1e-5 * (h / PUBLISHED_H) ** 3
+
+
+def _measure_scheme(case: Case, ref: Reference, config: Config) -> list[Row]:
+    clear = spence1975._collocation_matrix.cache_clear  # per (mesh, gamma), i.e. per case: a new case builds it
+    rows = []
+
+    def add(method: str, resolution: str, call, rank: float, published: bool) -> None:
+        sol, t = _timed(call, config, clear)
+        _, t_sphere = _timed(lambda: spence1975.sphere_from_flat(sol), config)
+        values = {"P*": (sol.compliance, t), "p(0)": (sol.central_pressure, t),
+                  "A": (spence1975.sphere_from_flat(sol).A, t + t_sphere)}
+        if not case.adhesive:
+            values = {"mu": (sol.mu, t), **values}
+        rows.extend(_rows(case, ref, method, resolution, sol.mesh.size, rank, values, published))
+
+    if case.adhesive:
+        for n in config.scheme_n:
+            add(SCHEME, f"N = {n}", lambda n=n: spence1975.solve_adhesive(spence1975.uniform_mesh(n), case.nu), n, n == PUBLISHED_N)
+        for label in config.graded_meshes:
+            mesh = spence1975.paper_mesh(label)
+            add(SCHEME_GRADED, f"mesh ({label}), N = {mesh.size}", lambda mesh=mesh: spence1975.solve_adhesive(mesh, case.nu),
+                mesh.size, False)
+    else:
+        for h in config.scheme_h:
+            add(SCHEME, f"h = {h:g}", lambda h=h: spence1975.solve_friction(case.c, case.nu, h=h, tol=_scheme_tol(h)), 1.0 / h,
+                h == PUBLISHED_H)
+    return rows
+
+
+def _measure_solver(case: Case, ref: Reference, config: Config, solved: dict | None = None) -> list[Row]:
+    rows = []
+    solved = solved or {}
+    for level in config.levels:
+        if case.adhesive:
+            field_, t = _timed(lambda level=level: eigen.solve_adhesive(case.gamma, LEVELS[level]), config)
+            size = field_.n_unknowns
+            values = {"P*": (field_.compliance, t), "p(0)": (float(field_.pressure(np.array([0.0]))[0]), t)}
+            flat = field_
+        else:
+            flat, t = _timed(lambda level=level: flat_punch(nu=case.nu, c=case.c, level=level), config,
+                             value=solved.get(level))
+            size = int(flat.route.split(", ")[1].split()[0])
+            inverse, t_inv = _timed(lambda level=level: flat_punch(nu=case.nu, mu=ref.mu, level=level), config)
+            values = {"mu": (flat.mu, t), "c": (inverse.c, t_inv), "P*": (flat.compliance, t),
+                      "p(0)": (float(flat.pressure(0.0)), t)}
+        A, t_A = _timed(lambda flat=flat: indentation_constant(flat, 2), config)
+        values["A"] = (A, t + t_A)
+        rows.extend(_rows(case, ref, SOLVER, f"level {level}", size, level, values,
+                          is_reference=level == 4 and not case.adhesive))
+    if case.adhesive:
+        closed, t = _timed(lambda: flat_punch(nu=case.nu, c=1.0), config)
+        sphere, t_A = _timed(lambda: power_law(2, nu=case.nu, c=1.0), config)
+        values = {"P*": (closed.compliance, t), "p(0)": (float(closed.pressure(0.0)), t), "A": (sphere.A, t_A)}
+        rows.extend(_rows(case, ref, CLOSED_FORM, "App. B", 0, 0, values))
+    return rows
+
+
+def _measure_table(case: Case, ref: Reference, config: Config) -> list[Row]:
+    if case.adhesive:
+        return []  # c = 1 lies outside the table (c <= 0.95)
+    mu, t_mu = _timed(lambda: friction_coefficient(case.c, case.nu), config)
+    c, t_c = _timed(lambda: stick_radius(ref.mu, case.nu), config)
+    p, t_p = _timed(lambda: float(table_compliance(case.c, case.gamma)[0]), config)
+    return _rows(case, ref, TABLE, "level-3 fit", 0, 0, {"mu": (mu, t_mu), "c": (c, t_c), "P*": (p, t_p)})
+
+
+def _second_order():
+    """``asymptotics.second_order`` if it exists and works (written alongside this benchmark), else None."""
+    try:
+        module = importlib.import_module("asymptotics.second_order")
+        module.mu_over_gamma_second_order(0.5, 0.25)  # its generated table may not exist yet
+    except ImportError:
+        return None
+    return module
+
+
+def _measure_asymptotic(case: Case, ref: Reference, config: Config) -> list[Row]:
+    g = case.gamma
+    if case.adhesive:
+        p, t = _timed(lambda: float(asymptotic_flat_punch.compliance_first_order(1.0, g)), config)  # (2.36)
+        return _rows(case, ref, ASYMPTOTIC, "(2.36)", 0, 1, {"P*": (p, t)})
+    values = {
+        "mu": _timed(lambda: g * float(asymptotic_flat_punch.mu_over_gamma(case.c)), config),  # (2.28)
+        "c": _timed(lambda: float(asymptotic_flat_punch.stick_radius(ref.mu, gamma=g)), config),  # (2.28) inverted
+        "P*": _timed(lambda: float(asymptotic_flat_punch.compliance_first_order(case.c, g)), config),  # (2.34)
+        "p(0)": _timed(lambda: 2.0 / math.pi + g * g * float(asymptotic_flat_punch.pressure_correction(0.0, case.c)),
+                       config),  # (2.32)-(2.33)
+    }
+    rows = _rows(case, ref, ASYMPTOTIC, "first order", 0, 1, values)
+    second = _second_order()
+    if second is not None:
+        values = {
+            "mu": _timed(lambda: g * float(second.mu_over_gamma_second_order(case.c, g)), config),
+            "c": _timed(lambda: float(asymptotic_flat_punch.stick_radius(ref.mu, gamma=g, order=2)), config),
+        }
+        rows += _rows(case, ref, ASYMPTOTIC, "second order", 0, 2, values)
+    return rows
+
+
+_MEASURES = {"scheme": _measure_scheme, "solver": _measure_solver, "table": _measure_table,
+             "asymptotic": _measure_asymptotic}
+
+
+def measure_case(case: Case, config: Config) -> tuple[Reference, list[Row]]:
+    """Reference and rows of every selected method for one case."""
+    ref, solved = _reference_and_solutions(case)
+    rows = []
+    for family in ("scheme", "solver", "table", "asymptotic"):
+        if family in config.methods:
+            measure = _MEASURES[family]
+            rows += measure(case, ref, config, solved) if family == "solver" else measure(case, ref, config)
+    return ref, rows
+
+
+def _measure_setup(config: Config) -> list[Setup]:
+    """Cold first call (every cache cleared) and warm repeats, for one frictional and one adhesive case."""
+    frictional = next((c for c in config.cases if c == Case(0.25, 0.5)), None) or next(
+        (c for c in config.cases if not c.adhesive), None)
+    adhesive = next((c for c in config.cases if c.adhesive), None)
+    calls: list[tuple[Case, str, str, Callable[[], object]]] = []
+    if frictional is not None:
+        nu, c = frictional.nu, frictional.c
+        if "scheme" in config.methods:
+            calls += [(frictional, SCHEME, f"h = {h:g}", lambda h=h: spence1975.solve_friction(c, nu, h=h, tol=_scheme_tol(h)))
+                      for h in config.scheme_h]
+        if "solver" in config.methods:
+            calls += [(frictional, SOLVER, f"level {lv}", lambda lv=lv: flat_punch(nu=nu, c=c, level=lv))
+                      for lv in config.levels]
+        if "table" in config.methods:
+            calls.append((frictional, TABLE, "level-3 fit", lambda: friction_coefficient(c, nu)))
+    if adhesive is not None:
+        nu, g = adhesive.nu, adhesive.gamma
+        if "scheme" in config.methods:
+            calls += [(adhesive, SCHEME, f"N = {n}", lambda n=n: spence1975.solve_adhesive(spence1975.uniform_mesh(n), nu))
+                      for n in config.scheme_n]
+        if "solver" in config.methods:
+            calls += [(adhesive, SOLVER, f"level {lv}", lambda lv=lv: eigen.solve_adhesive(g, LEVELS[lv]))
+                      for lv in config.levels]
+    out = []
+    for case, method, resolution, call in calls:
+        clear_caches()
+        t0 = time.perf_counter()
+        call()
+        first = time.perf_counter() - t0
+        repeat = median_time(call, budget=config.budget, max_runs=config.max_runs, warm=True)
+        out.append(Setup(case, method, resolution, first, repeat))
+    return out
+
+
+def _aitken(values: Sequence[float]) -> tuple[float, float]:
+    """Limit and observed order of the last three terms of a sequence at h, h/2, h/4 (Aitken's delta^2)."""
+    d1, d2 = values[-2] - values[-3], values[-1] - values[-2]
+    ratio = d1 / d2
+    return values[-1] + d2 / (ratio - 1.0), math.log2(abs(ratio))
+
+
+def _cross_checks(rows: Sequence[Row], references: Sequence[Reference]) -> list[CrossCheck]:
+    out = []
+    for ref in references:
+        if ref.case.adhesive:
+            continue
+        for quantity in ("mu", "P*"):
+            series = sorted((r for r in rows if r.method == SCHEME and r.quantity == quantity
+                             and (r.nu, r.c) == (ref.case.nu, ref.case.c)), key=lambda r: r.rank)
+            halving = [r for r in series if r.rank >= 1 / PUBLISHED_H - 1e-9]  # h = .02 and finer, halving
+            if len(halving) < 4:
+                continue
+            values = [r.value for r in halving]
+            ext, order = _aitken(values)
+            coarse, _ = _aitken(values[:-1])
+            out.append(CrossCheck(ref.case, quantity, ext, abs(ext - coarse), order, ref.value(quantity)))
+    return out
+
+
+def run(config: Config = FULL, progress: Callable[[str], object] | None = None) -> Benchmark:
+    """Measure everything ``config`` asks for (the setup pass first, while the caches are cold)."""
+    start = time.perf_counter()
+    note = progress or (lambda message: None)
+    setups = []
+    if config.setup:
+        note("setup: first calls with caches cleared")
+        setups = _measure_setup(config)
+    references, rows = [], []
+    for case in config.cases:
+        note(f"case {case.label}")
+        ref, case_rows = measure_case(case, config)
+        references.append(ref)
+        rows += case_rows
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    machine = {"cores": os.cpu_count(), "blas_threads": os.environ.get("OPENBLAS_NUM_THREADS", "unset"),
+               "load": load}
+    return Benchmark(config, tuple(references), tuple(rows), tuple(setups), tuple(_cross_checks(rows, references)),
+                     time.perf_counter() - start, machine)
+
+
+# ------------------------------------------------------------------------------ headline
+def time_to_reach(points: Iterable[tuple[float, float]], target: float) -> float | None:
+    """Shortest time among (seconds, error) points whose error is at most ``target`` (None if none)."""
+    times = [t for t, e in points if e <= target]
+    return min(times) if times else None
+
+
+def best_error_within(points: Iterable[tuple[float, float]], seconds: float) -> float | None:
+    """Smallest error among (seconds, error) points that run within ``seconds`` (None if none)."""
+    errors = [e for t, e in points if t <= seconds]
+    return min(errors) if errors else None
+
+
+def headline(rows: Sequence[Row], quantity: str, target: float = TARGET) -> Headline | None:
+    """Our solver's time to ``target`` against the paper's scheme at its published resolution.
+
+    Per case: our time = the shortest level reaching ``target``; the paper's = its published
+    resolution. Cases where no level reaches the target are left out, and rows that are
+    the reference itself are not used. None when no case has both.
+    """
+    per_case = []
+    cases = sorted({(r.nu, r.c) for r in rows if r.quantity == quantity})
+    for key in cases:
+        mine = [r for r in rows if (r.nu, r.c) == key and r.quantity == quantity and not r.is_reference]
+        ours = [(r.seconds, r.error) for r in mine if r.method == SOLVER]
+        paper = [(r.seconds, r.error) for r in mine if r.method == SCHEME]
+        published = [r for r in mine if r.method == SCHEME and r.published]
+        t_ours = time_to_reach(ours, target)
+        if t_ours is None or not published:
+            continue
+        level = next(r.resolution for r in mine if r.method == SOLVER and r.seconds == t_ours)
+        table = [(r.seconds, r.error) for r in mine if r.method == TABLE]
+        slope, t_extrapolated = _extrapolate(paper, target)
+        per_case.append((t_ours, level, published[0], best_error_within(paper, t_ours),
+                         best_error_within(ours, published[0].seconds), min(t for t, _ in ours), table,
+                         slope, t_extrapolated))
+    if not per_case:
+        return None
+    ratios = [t / pub.seconds for t, _, pub, *_ in per_case]
+    in_paper_time = [x[4] for x in per_case]
+    tables = [x[6][0] for x in per_case if x[6]]
+    return Headline(
+        quantity=quantity,
+        cases=len(per_case),
+        target=target,
+        our_seconds=statistics.median(x[0] for x in per_case),
+        our_levels=tuple(sorted({x[1] for x in per_case})),
+        paper_seconds=statistics.median(x[2].seconds for x in per_case),
+        paper_error=max(x[2].error for x in per_case),
+        ratio=statistics.median(ratios),
+        ratio_range=(min(ratios), max(ratios)),
+        paper_error_in_our_time=None if any(x[3] is None for x in per_case) else max(x[3] for x in per_case),
+        our_error_in_paper_time=None if any(e is None for e in in_paper_time) else max(in_paper_time),
+        our_fastest_seconds=statistics.median(x[5] for x in per_case),
+        table_seconds=statistics.median(t for t, _ in tables) if tables else None,
+        table_error=max(e for _, e in tables) if tables else None,
+        paper_slope=statistics.median(x[7] for x in per_case),
+        paper_extrapolated_seconds=statistics.median(x[8] for x in per_case),
+    )
+
+
+def _extrapolate(points: Sequence[tuple[float, float]], target: float) -> tuple[float, float]:
+    """Slope s of the least-squares line log(error) = a - s log(time), and the time where it reaches ``target``."""
+    log_t, log_e = np.log([t for t, _ in points]), np.log([e for _, e in points])
+    minus_s, a = np.polyfit(log_t, log_e, 1)
+    return float(-minus_s), float(np.exp((math.log(target) - a) / minus_s))
+
+
+# -------------------------------------------------------------------------------- output
+def _ms(seconds: float) -> str:
+    ms = 1e3 * seconds
+    return f"{ms:.3g}" if ms >= 0.01 else f"{ms:.1e}"
+
+
+def _err(e: float) -> str:
+    return "0" if e == 0.0 else f"{e:.1e}"
+
+
+def _headline_lines(h: Headline, where: str) -> list[str]:
+    lines = [
+        f"- **{QUANTITY_TEXT[h.quantity]}, {where}** ({h.cases} cases): our solver reaches {h.target:.0e} in "
+        f"{_ms(h.our_seconds)} ms ({', '.join(h.our_levels)}); the paper's scheme at its published resolution "
+        f"takes {_ms(h.paper_seconds)} ms for errors up to {h.paper_error:.1e}: time ratio "
+        f"{h.ratio:.3g} (range {h.ratio_range[0]:.3g}-{h.ratio_range[1]:.3g} over the cases).",
+        f"  - In our solver's time the paper's scheme reaches {h.paper_error_in_our_time:.1e} at best (worst case); "
+        f"its error falls like time^-{h.paper_slope:.2f}, so it would need about {h.paper_extrapolated_seconds:.0e} s "
+        f"for {h.target:.0e} (extrapolated, median over the cases).",
+    ]
+    if h.our_error_in_paper_time is None:
+        lines.append(f"  - In the paper's time none of our solver's levels runs (the cheapest, level 1, takes "
+                     f"{_ms(h.our_fastest_seconds)} ms)" + (
+                         f"; the Chebyshev table route reaches {h.table_error:.1e} in {_ms(h.table_seconds)} ms."
+                         if h.table_error is not None else "."))
+    else:
+        lines.append(f"  - In the paper's time our solver reaches {h.our_error_in_paper_time:.1e}.")
+    return lines
+
+
+def _key(r: Row) -> tuple:
+    return (METHODS.index(r.method), r.rank, r.resolution)
+
+
+def _quantity_table(rows: Sequence[Row], quantity: str, adhesive: bool) -> list[str]:
+    mine = [r for r in rows if r.quantity == quantity and (r.c == 1.0) == adhesive]
+    if not mine:
+        return []
+    cases = sorted({(r.nu, r.c) for r in mine})
+    header = "| method | resolution | N / unknowns | " + " | ".join(
+        f"nu={nu:g}" + ("" if adhesive else f", c={c:g}") for nu, c in cases) + " | time, ms: median (range) |"
+    lines = [header, "|" + "---|" * (len(cases) + 4)]
+    for method, resolution in sorted({(r.method, r.resolution) for r in mine},
+                                     key=lambda k: _key(next(r for r in mine if (r.method, r.resolution) == k))):
+        group = [r for r in mine if (r.method, r.resolution) == (method, resolution)]
+        by_case = {(r.nu, r.c): r for r in group}
+        sizes = sorted({r.size for r in group if r.size})
+        size = "" if not sizes else (f"{sizes[0]}" if len(sizes) == 1 else f"{sizes[0]}-{sizes[-1]}")
+        times = [r.seconds for r in group]
+        cells = [("(reference)" if by_case[k].is_reference else _err(by_case[k].error)) if k in by_case else "-"
+                 for k in cases]
+        mark = " (paper's)" if any(r.published for r in group) else ""
+        lines.append(f"| {method} | {resolution}{mark} | {size} | " + " | ".join(cells) +
+                     f" | {_ms(statistics.median(times))} ({_ms(min(times))}-{_ms(max(times))}) |")
+    return lines
+
+
+def render(bench: Benchmark) -> str:
+    """The Markdown record (rows in a fixed order; the timings themselves vary from run to run)."""
+    m = bench.machine
+    lines = [
+        "# Run time against error: the paper's scheme, our solver, the table and the asymptotics",
+        "",
+        "Generated by `python -m numeric.bench` (`hertz-friction bench`); see the module docstring of",
+        "`numeric/bench.py` for what is measured and how. Timings depend on the machine and its load and",
+        "differ between runs: this file is a record, not compared by the tests.",
+        "",
+        f"Machine: {m.get('cores')} cores, OPENBLAS_NUM_THREADS={m.get('blas_threads')}, load average "
+        f"{m.get('load', float('nan')):.1f} when the run ended (the machine was shared with other jobs). "
+        f"Full run: {bench.seconds:.0f} s.",
+        "",
+        "On a shared machine run it as `OPENBLAS_NUM_THREADS=1 python -m numeric.bench`: with the default",
+        "threaded BLAS on the loaded 2-core machine one level-1 solve was measured at 0.48 s against",
+        "0.076 s single-threaded (level 4: 2.1 s against 0.77 s).",
+        "",
+        "## Headline",
+        "",
+    ]
+    for quantity, adhesive in (("mu", False), ("P*", False), ("P*", True)):
+        h = headline([r for r in bench.rows if (r.c == 1.0) == adhesive], quantity)
+        if h is not None:
+            lines += _headline_lines(h, "c = 1" if adhesive else "0 < c < 1")
+    lines += [
+        "",
+        "Equal time: the paper's scheme offers no c for given mu (c is a node of its mesh) and the",
+        "table no p(0) or A; the time ratio for c is therefore not formed.",
+        "",
+        "## Error and reference",
+        "",
+        "Error = |value - reference| / |reference|. What each reference rests on:",
+        "",
+        "- c = 1 (fully adhesive): the closed forms of App. B, P0* = atanh(gamma)/gamma (B4),",
+        "  p0(0) = (kappa/gamma) cosh(pi kappa/2) (4.10), A from Psi1 (4.18) (`asymptotics.adhesive`,",
+        "  checked there against mpmath at 30 digits).",
+        "- 0 < c < 1: our solver at its finest level 4 (`numeric.discretize.LEVELS[4]`); A by",
+        "  `indentation_constant` on the level-4 flat solution. Its error is bounded by its distance to",
+        "  level 3 (column `|L4 - L3|`: the levels converge exponentially) and it is cross-checked",
+        "  against a different discretisation, the paper's piecewise-constant scheme Aitken-extrapolated",
+        "  from its three finest meshes h = 0.01, 0.005, 0.0025 (uncertainty: change of the extrapolant",
+        "  when the triple h = 0.02, 0.01, 0.005 is used instead; order: log2 of the ratio of successive",
+        "  differences). Errors of our level 3 and of the table near `|L4 - L3|` are at the reference's",
+        "  own resolution.",
+        "- c for given mu: mu is the reference mu of the case, so the reference c is the case's c",
+        "  (exact up to the reference mu's error times dc/dmu). `flat_punch(mu=)` starts from the",
+        "  table's c and accepts it when the fine level's mu matches to 1e-11 relative, so levels that",
+        "  accept it return the same c as the table route.",
+        "- At c = 0.9 the friction meshes are not nested: at h = 0.02 the refined band of width 0.08",
+        "  around c is extended to the edge x = 1, at finer h it is not (`friction_mesh`). The order",
+        "  drifts, the extrapolation's uncertainty is large and the cross-check there is weaker than the",
+        "  few times 1e-6 reached at c = 0.1 and 0.5.",
+        "",
+        "| nu | gamma | c | mu | P* | p(0) | A | basis | \\|L4 - L3\\| | paper's scheme extrapolated - reference (uncertainty, order): mu; P* |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for ref in bench.references:
+        k = ref.case
+        checks = [x for x in bench.checks if x.case == k]
+        cross = "; ".join(f"{x.extrapolated - x.reference:+.1e} ({x.uncertainty:.0e}, {x.order:.2f})"
+                          for x in checks) or "-"
+        mu = "inf" if math.isinf(ref.mu) else f"{ref.mu:.12f}"
+        lines.append(f"| {k.nu:g} | {k.gamma:.6g} | {k.c:g} | {mu} | {ref.compliance:.12f} | "
+                     f"{ref.central_pressure:.12f} | {ref.A:.12f} | {ref.basis} | {_err(ref.spread)} | {cross} |")
+    if bench.setups:
+        lines += [
+            "",
+            "## Setup cost",
+            "",
+            "First call with every `functools` cache of `numeric` and `asymptotics` cleared (`clear_caches`),",
+            "against the median of later calls of the same case. What is cached: per resolution level the",
+            "reference meshes and their stick-stick and slip-slip Abel blocks (`numeric.discretize._reference`,",
+            "c-independent: the blocks for a given c are these times c or sqrt(1 - c^2); only the two cross",
+            "blocks are computed per call) and the adhesive mesh and blocks (`adhesive_discretisation`), the",
+            "Gauss rules, the Chebyshev table (`numeric.eigen_table._data`), and for the paper's scheme the",
+            "collocation matrix L of (4.3) per (mesh, gamma) (`numeric.spence1975._collocation_matrix`), i.e.",
+            "per case. Our level L also solves level L - 1 for its error estimate, so its first call builds",
+            "both levels. The medians in the tables below are for a new case: for the paper's scheme with its",
+            "per-case matrix cache cleared before each run (the repeat column here keeps it).",
+            "",
+            "| case | method | resolution | first call, ms | repeat, ms (median) | setup, ms |",
+            "|---|---|---|---|---|---|",
+        ]
+        for s in bench.setups:
+            lines.append(f"| {s.case.label} | {s.method} | {s.resolution} | {_ms(s.first)} | {_ms(s.repeat)} | "
+                         f"{_ms(max(s.first - s.repeat, 0.0))} |")
+    lines += [
+        "",
+        "## Error of every method at every resolution",
+        "",
+        "Relative errors per case; time = median over the cases of the per-case median run time (range over",
+        "the cases), for a new case with warm case-independent caches. The time of A includes the flat-punch",
+        "solve. The paper's scheme: friction mesh of §4.1 with coarse width h (regula falsi tolerance",
+        "1e-5 (h/0.02)^3: the paper's 1e-5 at h = 0.02); at c = 1 uniform meshes of N intervals and the",
+        "graded meshes (iii), (iv) of §4. Our solver: `flat_punch(nu=, c=, level=L)` (`mu=` for c),",
+        "including the coarser level its error estimate solves; at c = 1 the discrete adhesive solver",
+        "`numeric.eigen.solve_adhesive` (`flat_punch(c=1)` returns the closed form, listed separately:",
+        "for P* and p(0) it is the reference itself; A is its quadrature (3.13) of (B3)). Asymptotic",
+        "formulas: (2.28) for mu and, inverted, for c; (2.34) with the first-order shear for P*;",
+        "p(0) = 2/pi + gamma^2 P1(0; c) by (2.32)-(2.33); (2.36) at c = 1.",
+    ]
+    for quantity in QUANTITIES:
+        for adhesive in (False, True):
+            table = _quantity_table(bench.rows, quantity, adhesive)
+            if table:
+                lines += ["", f"### {QUANTITY_TEXT[quantity]}, {'c = 1' if adhesive else '0 < c < 1'}", ""] + table
+    return "\n".join(lines) + "\n"
+
+
+def _curve(rows: Sequence[Row], method: str) -> tuple[list[float], list[float], list[str]]:
+    """Median time over cases and worst error over cases per resolution of ``method``, coarse to fine."""
+    groups: dict[str, list[Row]] = {}
+    for r in rows:
+        if r.method == method and not r.is_reference:
+            groups.setdefault(r.resolution, []).append(r)
+    keys = sorted(groups, key=lambda k: groups[k][0].rank)
+    keys = [k for k in keys if max(r.error for r in groups[k]) > 0.0]
+    return ([statistics.median(r.seconds for r in groups[k]) for k in keys],
+            [max(r.error for r in groups[k]) for k in keys], keys)
+
+
+_STYLE = {SCHEME: ("tab:red", "o"), SCHEME_GRADED: ("tab:orange", "D"), SOLVER: ("tab:blue", "s"),
+          CLOSED_FORM: ("tab:cyan", "P"), TABLE: ("tab:green", "^"), ASYMPTOTIC: ("tab:purple", "v")}
+
+
+def plot(bench: Benchmark, path: Path) -> None:
+    """Log-log error against run time: mu and P* (0 < c < 1, reference level 4), P* at c = 1 (exact)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = [("mu", False, "mu for given c, 0 < c < 1 (reference: level 4)"),
+              ("P*", False, "compliance P*, 0 < c < 1 (reference: level 4)"),
+              ("P*", True, "compliance P*, c = 1 (reference: exact (B4))")]
+    fig, axes = plt.subplots(1, 3, figsize=(17, 6.2), sharey=True)
+    handles = {}
+    for ax, (quantity, adhesive, title) in zip(axes, panels):
+        rows = [r for r in bench.rows if r.quantity == quantity and (r.c == 1.0) == adhesive]
+        for method in METHODS:
+            mine = [r for r in rows if r.method == method and r.error > 0.0 and not r.is_reference]
+            if not mine:
+                continue
+            colour, marker = _STYLE[method]
+            ax.scatter([r.seconds for r in mine], [r.error for r in mine], s=10, color=colour, alpha=0.25,
+                       marker=marker, linewidths=0)
+            t, e, labels = _curve(rows, method)
+            (handles[method],) = ax.plot(t, e, color=colour, marker=marker, ms=6, lw=1.8, label=method)
+            if method in (SCHEME, SOLVER):
+                for k, (x, y, label) in enumerate(zip(t, e, labels)):  # alternate above and below the curve
+                    ax.annotate(label.replace("level ", "L"), (x, y), textcoords="offset points",
+                                xytext=(4, 5 if k % 2 == 0 else -13), fontsize=8, color=colour)
+        ax.axhline(TARGET, color="grey", ls=":", lw=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(title, fontsize=11)
+        ax.set_xlabel("run time per solve, s (median over cases)")
+        ax.grid(True, which="major", alpha=0.3)
+    axes[0].set_ylabel("relative error (worst over cases; faint: each case)")
+    if handles:
+        axes[0].legend(handles=[handles[m] for m in METHODS if m in handles], fontsize=9, loc="lower left")
+    fig.suptitle("Flat punch with friction [S75]: error against run time "
+                 f"({bench.machine.get('cores')} cores; dotted: {TARGET:.0e})", fontsize=12)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def _default_output() -> Path | None:
+    """``derivations/`` of the source tree (editable install), else None."""
+    candidate = Path(__file__).resolve().parents[1] / "derivations"
+    return candidate if candidate.is_dir() else None
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the benchmark; write ``benchmark.md`` and ``benchmark.png`` (full run) and print the Markdown."""
+    parser = argparse.ArgumentParser(prog="hertz-friction bench", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="nu = 0.25, c = 0.5 and 1 only, coarser meshes (~1 min)")
+    parser.add_argument("--output", type=Path, default=None,
+                        help="directory for benchmark.md and benchmark.png (default: derivations/ for the full run; "
+                             "the quick run only prints unless given)")
+    parser.add_argument("--no-plot", action="store_true", help="do not draw benchmark.png")
+    args = parser.parse_args(argv)
+    output = args.output if args.output is not None or args.quick else _default_output()
+    bench = run(QUICK if args.quick else FULL, progress=lambda message: print(message, file=sys.stderr))
+    text = render(bench)
+    if output is not None:
+        output.mkdir(parents=True, exist_ok=True)
+        (output / "benchmark.md").write_text(text, encoding="utf-8")
+        if not args.no_plot:
+            plot(bench, output / "benchmark.png")
+    sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

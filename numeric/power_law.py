@@ -165,6 +165,9 @@ def _integration_matrices(nodes: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> 
     s, s_lo, s_hi = 1.0 - nodes[near], 1.0 - hi[near], 1.0 - lo[near]
     xi[near] = -(s - 0.5 * (s_hi + s_lo)[:, None]) / half_safe[near, None]
     xi = np.clip(xi, -1.0, 1.0)
+    # rounded nodes of very short pieces may coincide (as in _gauss_rule): use the ideal ones there
+    distinct = np.all(np.diff(np.sort(xi, axis=1), axis=1) > 1e-3 / _NODES**2, axis=1)
+    xi[~distinct] = _legendre()[0]
     vander = np.polynomial.legendre.legvander(xi, _NODES)  # P_0 .. P_N
     k = np.arange(1, _NODES)
     integ = np.empty(xi.shape + (_NODES,))

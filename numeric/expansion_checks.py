@@ -1,0 +1,592 @@
+"""The asymptotic expansions of [S75] §2.3 checked against the full solution, with observed orders.
+
+Each check compares a closed form of ``asymptotics.flat_punch`` (or
+``asymptotics.second_order``, ``asymptotics.adhesive``) with the full solution of
+``numeric.flat_punch`` over Poisson's ratios from nu = 0.49 (gamma = 0.0196) to nu = -1/2
+(gamma = 2/3), and fits the order in gamma from log-log slopes between neighbouring gammas
+(``observed_orders``). The fields of ``ExpansionStudy``, each a tuple of frozen rows:
+
+    friction_law          mu/gamma = f0(c)                      (2.28)   expect O(gamma^2)
+                          mu/gamma = f0 + gamma^2 f2            (beyond) expect O(gamma^4)
+    small_mu              c ~ 4 exp(-gamma/mu)                  (2.29)   mu -> 0
+    large_mu              1 - c ~ 2 exp(-pi mu/gamma)           (2.29)   mu -> inf
+    largest_stick(_estimates)  mu(c) near the largest stick radius c_max(gamma) < 1
+    stick_shear           q/(mu p) = 1 - psi(x, c) on (0, c)    (2.31)   expect O(gamma^2)
+    compliance            P* = 1 + gamma int (1 - sqrt(1-t^2)) q^(0)   (2.34)  expect O(gamma^4)
+    adhesive_compliance   P* = 1 + gamma^2/3                    (2.36)   expect O(gamma^4)
+
+The second-order columns (``asymptotics.second_order``) are filled only once that module's
+generated table exists (its quadratures take seconds a point); until then they are None.
+
+``expansion_study(fast)`` runs them all; ``expansion_tables(fast)`` renders them as
+deterministic Markdown (fixed formats, errors to 2 significant digits, rows sorted, no
+timestamps) for ``derivations/section_2_3.md``; ``expansion_errors`` and
+``plot_expansion_errors`` give the log-log figure "error against gamma". ``fast=True`` uses
+the Chebyshev table (``numeric.eigen_table``, mu to 7e-12 relative, P* to 5e-14) for mu and
+P*, level-2 solutions for the stresses and no solves near c_max (seconds); ``fast=False``
+solves everything at level 3 (1e-11) and adds c = 1e-4, 1 - c down to 1e-6 and the c_max
+study (minutes).
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from asymptotics.adhesive import compliance_adhesive
+from asymptotics.arrays import read_only
+from asymptotics.flat_punch import (
+    c_large_mu,
+    c_small_mu,
+    compliance_first_order,
+    mu_over_gamma,
+    shear_ratio_first_order,
+)
+from asymptotics.materials import gamma_from_nu, kappa_from_gamma
+from asymptotics.second_order import compliance_second_order, mu_over_gamma_second_order
+
+from .eigen_table import table_compliance
+from .flat_punch import FlatPunchSolution, flat_punch, friction_coefficient
+
+__all__ = [
+    "NUS",
+    "C_VALUES",
+    "FrictionLawRow",
+    "SmallMuRow",
+    "LargeMuRow",
+    "LargestStickRow",
+    "LargestStickEstimate",
+    "StickShearRow",
+    "ComplianceRow",
+    "AdhesiveComplianceRow",
+    "OrderRow",
+    "ExpansionStudy",
+    "ExpansionErrors",
+    "expansion_study",
+    "expansion_tables",
+    "render_markdown",
+    "observed_orders",
+    "expansion_errors",
+    "plot_expansion_errors",
+]
+
+#: Poisson's ratios of the study: gamma = (1 - 2 nu)/(2 - 2 nu) from 0.0196 to 2/3 (2.2)
+NUS = (0.49, 0.45, 0.4, 0.3, 0.2, 0.1, 0.0, -0.25, -0.5)
+#: stick radii of the study
+C_VALUES = (0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95)
+_STRESS_NUS_FAST = (0.49, 0.45, 0.4, 0.0)
+_STRESS_CS_FAST = (0.3, 0.7)
+_SMALL_MU_NUS = (0.49, 0.45, 0.3, 0.0, -0.5)
+_LARGE_MU_NUS = (0.49, 0.45, 0.4, 0.3)
+# 1 - c_max(gamma) measured once with flat_punch(gamma=..., mu=1000) at level 2 (1.7e-2,
+# 1.0e-3, 7.0e-5, 5.3e-6, 4.1e-7 for gamma = 2/3, 1/2, 0.4, 1/3, 2/7): only used to place the
+# grid of stick radii 1 - c = (1 - c_max) * _CMAX_FACTORS, which the c_max fit then re-measures.
+_CMAX_GUESS = ((2.0 / 3.0, 1.72e-2), (0.5, 1.0e-3), (0.4, 7.0e-5), (1.0 / 3.0, 5.25e-6), (2.0 / 7.0, 4.1e-7))
+_CMAX_FACTORS = (2.0, 1.5, 1.2, 1.1, 1.05)
+
+
+@dataclass(frozen=True, slots=True)
+class OrderRow:
+    """Observed order of one approximation at fixed c: log-log slopes of |error| against gamma.
+
+    ``slopes[k]`` is the slope between the k-th and (k+1)-th smallest gamma of ``gammas``.
+    """
+
+    quantity: str
+    c: float
+    gammas: tuple[float, ...]
+    slopes: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class FrictionLawRow:
+    """(2.28) at one (nu, c): full mu against gamma f0(c) and gamma (f0 + gamma^2 f2).
+
+    ``relative_error`` = (gamma f0 - mu)/mu, ``scaled`` = that / gamma^2;
+    ``relative_error_second`` = (gamma (f0 + gamma^2 f2) - mu)/mu, ``scaled_second`` = / gamma^4
+    (None while ``asymptotics.second_order`` has no generated table).
+    """
+
+    nu: float
+    gamma: float
+    c: float
+    mu: float
+    relative_error: float
+    scaled: float
+    relative_error_second: float | None
+    scaled_second: float | None
+
+
+@dataclass(frozen=True, slots=True)
+class SmallMuRow:
+    """(2.29), mu -> 0, at one (nu, c): c from 4 exp(-gamma/mu), from ``c_small_mu`` (three
+    correction terms, i.e. the inverse of the first-order law (2.28)), and the exponent.
+
+    ``relative_error_leading`` = c_(2.29)/c - 1 with mu the full solution's friction;
+    ``relative_error_series`` the same for ``c_small_mu(mu, gamma, terms=4)``;
+    ``exponent_defect`` = mu log(4/c)/gamma - 1 (0 if c = 4 exp(-gamma/mu) held exactly).
+    """
+
+    nu: float
+    gamma: float
+    c: float
+    mu: float
+    relative_error_leading: float
+    relative_error_series: float
+    exponent_defect: float
+
+
+@dataclass(frozen=True, slots=True)
+class LargeMuRow:
+    """(2.29), mu -> inf, at one (nu, c): 1 - c from 2 exp(-pi mu/gamma) and from ``c_large_mu``.
+
+    ``relative_error_leading`` = (1 - c)_(2.29)/(1 - c) - 1; ``relative_error_series`` the same
+    for ``c_large_mu(mu, gamma, terms=4)``; ``exponent_defect`` = pi mu/(gamma log(2/(1 - c))) - 1;
+    ``law_scaled`` = (mu - gamma f0(c))/(mu (gamma f0(c))^2), the error of (2.28) over the square of
+    its own mu: the gamma^2 term of (2.28) grows like f0^2 as c -> 1, not like a constant;
+    ``compliance_coefficient`` = (P* - 1)/gamma^2 of the full solution, to set beside 1/3 (2.36).
+    """
+
+    nu: float
+    gamma: float
+    one_minus_c: float
+    mu: float
+    relative_error_leading: float
+    relative_error_series: float
+    exponent_defect: float
+    law_scaled: float
+    compliance_coefficient: float
+
+
+@dataclass(frozen=True, slots=True)
+class LargestStickRow:
+    """mu(c) of the full solution close to the largest stick radius, at one (gamma, c)."""
+
+    gamma: float
+    one_minus_c: float
+    mu: float
+    error: float
+
+
+@dataclass(frozen=True, slots=True)
+class LargestStickEstimate:
+    """c_max(gamma): where 1/mu(c), fitted by a quadratic through the three stick radii
+    closest to it, reaches 0. ``ratio`` = (1 - c_max) exp(pi/kappa), kappa = (2/pi) atanh gamma
+    (4.10): constant if 1 - c_max = ratio exp(-pi/kappa)."""
+
+    gamma: float
+    kappa: float
+    one_minus_c_max: float
+    ratio: float
+
+
+@dataclass(frozen=True, slots=True)
+class StickShearRow:
+    """(2.31) at one (nu, c): max over the stick zone of |q/(mu p) - (1 - psi)|, and where."""
+
+    nu: float
+    gamma: float
+    c: float
+    max_difference: float
+    x_at_max: float
+    scaled: float
+
+
+@dataclass(frozen=True, slots=True)
+class ComplianceRow:
+    """(2.34) at one (nu, c): error of the first-order P* (and of the second-order one).
+
+    ``error`` = P*_(2.34) - P*, ``scaled`` = error/gamma^4, ``coefficient`` = (P* - 1)/gamma^2;
+    ``error_second`` = 1 + gamma^2 P2 + gamma^4 P4 - P*, ``scaled_second`` = that / gamma^6
+    (None while ``asymptotics.second_order`` has no generated table).
+    """
+
+    nu: float
+    gamma: float
+    c: float
+    compliance: float
+    error: float
+    scaled: float
+    coefficient: float
+    error_second: float | None
+    scaled_second: float | None
+
+
+@dataclass(frozen=True, slots=True)
+class AdhesiveComplianceRow:
+    """(2.36) at one nu: 1 + gamma^2/3 against atanh(gamma)/gamma (B4); error/gamma^4 -> 1/5."""
+
+    nu: float
+    gamma: float
+    exact: float
+    error: float
+    scaled: float
+
+
+@dataclass(frozen=True, slots=True)
+class ExpansionStudy:
+    """All checks of §2.3; ``fast`` says which mode produced it."""
+
+    fast: bool
+    friction_law: tuple[FrictionLawRow, ...]
+    small_mu: tuple[SmallMuRow, ...]
+    large_mu: tuple[LargeMuRow, ...]
+    largest_stick: tuple[LargestStickRow, ...]
+    largest_stick_estimates: tuple[LargestStickEstimate, ...]
+    stick_shear: tuple[StickShearRow, ...]
+    compliance: tuple[ComplianceRow, ...]
+    adhesive_compliance: tuple[AdhesiveComplianceRow, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class ExpansionErrors:
+    """Worst |error| over the stick radii at each gamma, per approximation (for the figure);
+    ``friction_law_second`` and ``compliance_second`` are None without the second-order table."""
+
+    gamma: np.ndarray
+    friction_law: np.ndarray
+    friction_law_second: np.ndarray | None
+    compliance: np.ndarray
+    compliance_second: np.ndarray | None
+    adhesive_compliance: np.ndarray
+    stick_gamma: np.ndarray
+    stick_shear: np.ndarray
+
+
+@lru_cache(maxsize=1)
+def _second_order_available() -> bool:
+    """Whether ``asymptotics.second_order`` has its generated table (else seconds a point)."""
+    try:
+        mu_over_gamma_second_order(0.5, 0.1)
+    except ImportError:
+        return False
+    return True
+
+
+# ----------------------------------------------------------------------------------------
+# the full solutions
+
+
+def _solve(nu: float, c: float, level: int) -> FlatPunchSolution:
+    return flat_punch(nu=nu, c=c, level=level)
+
+
+def _full_mu_and_compliance(nus, cs, fast: bool, solutions: dict) -> dict:
+    """mu and P* at each (nu, c): the table (fast) or level-3 solutions (kept in ``solutions``)."""
+    out = {}
+    for nu in nus:
+        g = float(gamma_from_nu(nu))
+        if fast:
+            mus = np.asarray(friction_coefficient(np.array(cs), nu))
+            pstars = table_compliance(np.array(cs), np.full(len(cs), g))
+            out.update({(nu, c): (float(m), float(p)) for c, m, p in zip(cs, mus, pstars)})
+        else:
+            for c in cs:
+                s = solutions.setdefault((nu, c), _solve(nu, c, 3))
+                out[(nu, c)] = (s.mu, s.compliance)
+    return out
+
+
+# ----------------------------------------------------------------------------------------
+# (2.28), (2.34), (2.36)
+
+
+def _friction_law(values: dict) -> tuple[FrictionLawRow, ...]:
+    rows = []
+    for (nu, c), (mu, _) in values.items():
+        g = float(gamma_from_nu(nu))
+        first = g * float(mu_over_gamma(c))  # (2.28)
+        rel = (first - mu) / mu
+        rel2 = (g * float(mu_over_gamma_second_order(c, g)) - mu) / mu if _second_order_available() else None
+        rows.append(FrictionLawRow(nu, g, c, mu, rel, rel / g**2, rel2, None if rel2 is None else rel2 / g**4))
+    return tuple(sorted(rows, key=lambda r: (r.c, r.gamma)))
+
+
+def _compliance(values: dict) -> tuple[ComplianceRow, ...]:
+    rows = []
+    for (nu, c), (_, pstar) in values.items():
+        g = float(gamma_from_nu(nu))
+        err = float(compliance_first_order(c, g)) - pstar  # (2.34)
+        err2 = float(compliance_second_order(c, g)) - pstar if _second_order_available() else None
+        rows.append(ComplianceRow(nu, g, c, pstar, err, err / g**4, (pstar - 1.0) / g**2,
+                                  err2, None if err2 is None else err2 / g**6))
+    return tuple(sorted(rows, key=lambda r: (r.c, r.gamma)))
+
+
+def _adhesive_compliance() -> tuple[AdhesiveComplianceRow, ...]:
+    rows = []
+    for nu in NUS:
+        g = float(gamma_from_nu(nu))
+        exact = float(compliance_adhesive(g))  # (B4)
+        err = 1.0 + g * g / 3.0 - exact  # (2.36)
+        rows.append(AdhesiveComplianceRow(nu, g, exact, err, err / g**4))
+    return tuple(sorted(rows, key=lambda r: r.gamma))
+
+
+# ----------------------------------------------------------------------------------------
+# (2.29) and the largest stick radius
+
+
+def _small_mu(fast: bool) -> tuple[SmallMuRow, ...]:
+    cs = (1e-2, 1e-3) if fast else (1e-2, 1e-3, 1e-4)
+    rows = []
+    for nu in _SMALL_MU_NUS:
+        g = float(gamma_from_nu(nu))
+        for c in cs:
+            mu = float(friction_coefficient(c, nu, level=2))  # table for c >= 1e-3, else solver
+            leading = 4.0 * math.exp(-g / mu)  # (2.29)
+            series = float(c_small_mu(mu, g, terms=4))
+            rows.append(SmallMuRow(nu, g, c, mu, leading / c - 1.0, series / c - 1.0, mu * math.log(4.0 / c) / g - 1.0))
+    return tuple(sorted(rows, key=lambda r: (r.gamma, -r.c)))
+
+
+def _large_mu(fast: bool) -> tuple[LargeMuRow, ...]:
+    gaps = (5e-2, 1e-2) if fast else (5e-2, 1e-2, 1e-3, 1e-4, 1e-6)
+    rows = []
+    for nu in _LARGE_MU_NUS[:2] if fast else _LARGE_MU_NUS:
+        g = float(gamma_from_nu(nu))
+        for gap in gaps:
+            s = flat_punch(nu=nu, c=1.0 - gap, level=2)
+            mu = s.mu
+            leading = 2.0 * math.exp(-math.pi * mu / g)  # (2.29)
+            series = 1.0 - float(c_large_mu(mu, g, terms=4))
+            first = g * float(mu_over_gamma(1.0 - gap))  # (2.28)
+            rows.append(LargeMuRow(nu, g, gap, mu, leading / gap - 1.0, series / gap - 1.0,
+                                   math.pi * mu / (g * math.log(2.0 / gap)) - 1.0, (mu - first) / (mu * first**2),
+                                   (s.compliance - 1.0) / g**2))
+    return tuple(sorted(rows, key=lambda r: (r.gamma, -r.one_minus_c)))
+
+
+def _largest_stick(fast: bool) -> tuple[tuple[LargestStickRow, ...], tuple[LargestStickEstimate, ...]]:
+    if fast:
+        return (), ()
+    rows, estimates = [], []
+    for g, guess in _CMAX_GUESS:
+        points = []
+        for factor in _CMAX_FACTORS:
+            s = flat_punch(gamma=g, c=1.0 - factor * guess, level=2)
+            points.append(LargestStickRow(g, factor * guess, s.mu, s.error))
+        rows.extend(points)
+        # 1/mu is a smooth function of c through 0 at c_max: quadratic through the last three
+        gap = np.array([p.one_minus_c for p in points[-3:]]) / guess
+        inverse = np.array([1.0 / p.mu for p in points[-3:]])
+        roots = np.roots(np.polyfit(gap, inverse, 2))
+        real = roots[np.isreal(roots)].real
+        root = float(real[np.argmin(np.abs(real - 1.0))]) * guess
+        kappa = float(kappa_from_gamma(g))
+        estimates.append(LargestStickEstimate(g, kappa, root, root * math.exp(math.pi / kappa)))
+    return (tuple(sorted(rows, key=lambda r: (r.gamma, -r.one_minus_c))),
+            tuple(sorted(estimates, key=lambda r: r.gamma)))
+
+
+# ----------------------------------------------------------------------------------------
+# (2.31)
+
+
+def _stick_grid(c: float) -> np.ndarray:
+    """Points of (0, c): uniform, plus graded toward c where both ratios approach 1 like sqrt."""
+    return np.unique(np.concatenate([np.linspace(0.0, c, 401)[1:-1], c * (1.0 - np.logspace(-7.0, -1.0, 61))]))
+
+
+def _stick_shear(fast: bool, solutions: dict) -> tuple[StickShearRow, ...]:
+    nus = _STRESS_NUS_FAST if fast else NUS
+    cs = _STRESS_CS_FAST if fast else (0.1, 0.3, 0.5, 0.7, 0.9)
+    rows = []
+    for nu in nus:
+        g = float(gamma_from_nu(nu))
+        for c in cs:
+            s = solutions[(nu, c)] if (nu, c) in solutions else _solve(nu, c, 2 if fast else 3)
+            x = _stick_grid(s.c)
+            diff = np.abs(np.asarray(s.shear(x)) / (s.mu * np.asarray(s.pressure(x))) - shear_ratio_first_order(x, c))
+            k = int(np.argmax(diff))  # (2.31)
+            rows.append(StickShearRow(nu, g, c, float(diff[k]), float(x[k]), float(diff[k]) / g**2))
+    return tuple(sorted(rows, key=lambda r: (r.c, r.gamma)))
+
+
+# ----------------------------------------------------------------------------------------
+# orders, the study, rendering
+
+
+def observed_orders(rows, value: str, quantity: str) -> tuple[OrderRow, ...]:
+    """Log-log slopes of |row.<value>| against gamma at each c of ``rows`` (sorted by gamma).
+
+    Examples
+    --------
+    >>> r = [AdhesiveComplianceRow(0.0, g, 0.0, g**4, 1.0) for g in (0.1, 0.2)]
+    >>> round(observed_orders(r, "error", "(2.36)")[0].slopes[0], 12)
+    4.0
+    """
+    by_c: dict[float, list] = {}
+    for r in rows:
+        by_c.setdefault(getattr(r, "c", math.nan), []).append(r)
+    out = []
+    for c, group in sorted(by_c.items()):
+        group = sorted(group, key=lambda r: r.gamma)
+        g = np.array([r.gamma for r in group])
+        e = np.abs(np.array([getattr(r, value) for r in group]))
+        slopes = np.diff(np.log(e)) / np.diff(np.log(g))
+        out.append(OrderRow(quantity, c, tuple(float(v) for v in g), tuple(float(v) for v in slopes)))
+    return tuple(out)
+
+
+def expansion_study(fast: bool) -> ExpansionStudy:
+    """Run every check of §2.3 (see the module docstring); ``fast`` picks the mode."""
+    if not isinstance(fast, bool):
+        raise ValueError(f"fast must be True or False, got {fast!r}")
+    solutions: dict = {}
+    values = _full_mu_and_compliance(NUS, C_VALUES, fast, solutions)
+    largest_rows, largest_estimates = _largest_stick(fast)
+    return ExpansionStudy(
+        fast=fast,
+        friction_law=_friction_law(values),
+        small_mu=_small_mu(fast),
+        large_mu=_large_mu(fast),
+        largest_stick=largest_rows,
+        largest_stick_estimates=largest_estimates,
+        stick_shear=_stick_shear(fast, solutions),
+        compliance=_compliance(values),
+        adhesive_compliance=_adhesive_compliance(),
+    )
+
+
+def _e(v: float) -> str:
+    """An error to 2 significant digits."""
+    return f"{v:.1e}"
+
+
+def _matrix(rows, value: str, title: str, orders: tuple[OrderRow, ...] | None = None) -> list[str]:
+    """Rows c, columns gamma (nu), cells row.<value>; the first two slopes at the right."""
+    gammas = sorted({(r.gamma, r.nu) for r in rows})
+    cells = {(r.c, r.gamma): getattr(r, value) for r in rows}
+    head = "| c | " + " | ".join(f"γ = {g:.4f} (ν = {nu:g})" for g, nu in gammas) + " |"
+    if orders:
+        head += " order (γ₁, γ₂) | order (γ₂, γ₃) |"
+    lines = [f"**{title}**", "", head, "|" + "---|" * (len(gammas) + 1 + (2 if orders else 0))]
+    slope = {o.c: o.slopes for o in orders or ()}
+    for c in sorted({r.c for r in rows}):
+        line = f"| {c:g} | " + " | ".join(_e(cells[(c, g)]) if (c, g) in cells else "" for g, _ in gammas) + " |"
+        if orders:
+            line += f" {slope[c][0]:.2f} | {slope[c][1]:.2f} |"
+        lines.append(line)
+    return lines + [""]
+
+
+def render_markdown(study: ExpansionStudy) -> str:
+    """Deterministic Markdown tables of an ``ExpansionStudy`` (errors to 2 significant digits)."""
+    mode = "fast mode (table μ and P*, level-2 stresses)" if study.fast else "full mode (level-3 solutions)"
+    out = [f"### Checks of the expansions of §2.3 against the full solution ({mode})", ""]
+    law = study.friction_law
+    out += _matrix(law, "relative_error", "(2.28): relative error (γ f0(c) − μ)/μ of the first-order law")
+    out += _matrix(law, "scaled", "(2.28): relative error / γ², with the observed order in γ",
+                   observed_orders(law, "relative_error", "(2.28)"))
+    if law[0].scaled_second is not None:
+        out += _matrix(law, "scaled_second", "second order μ/γ = f0 + γ² f2: relative error / γ⁴, with the observed order",
+                       observed_orders(law, "relative_error_second", "second order"))
+    out += ["**(2.29), μ → 0: c from the full μ(c)**", "",
+            "| γ | c | μ (full) | 4 exp(−γ/μ)/c − 1 | c_small_mu(4 terms)/c − 1 | μ log(4/c)/γ − 1 | same / γ² |",
+            "|---|---|---|---|---|---|---|"]
+    out += [f"| {r.gamma:.4f} | {r.c:.0e} | {r.mu:.6g} | {_e(r.relative_error_leading)} | "
+            f"{_e(r.relative_error_series)} | {_e(r.exponent_defect)} | {r.exponent_defect / r.gamma**2:.3f} |"
+            for r in study.small_mu] + [""]
+    out += ["**(2.29), μ → ∞: 1 − c from the full μ(c)**", "",
+            "| γ | 1 − c | μ (full) | 2 exp(−πμ/γ)/(1 − c) − 1 | c_large_mu(4 terms): same | "
+            "πμ/(γ log(2/(1 − c))) − 1 | (μ − γf0)/(μ (γf0)²) | (P* − 1)/γ² (→ 1/3 at c = 1) |",
+            "|---|---|---|---|---|---|---|---|"]
+    out += [f"| {r.gamma:.4f} | {r.one_minus_c:.0e} | {r.mu:.6g} | {_e(r.relative_error_leading)} | "
+            f"{_e(r.relative_error_series)} | {_e(r.exponent_defect)} | {r.law_scaled:.3f} | {r.compliance_coefficient:.5f} |"
+            for r in study.large_mu] + [""]
+    if study.largest_stick:
+        out += ["**Largest stick radius: μ(c) of the full solution (level 2) as c → c_max(γ)**", "",
+                "| γ | 1 − c | μ | 1/μ | solver error of μ |", "|---|---|---|---|---|"]
+        out += [f"| {r.gamma:.4f} | {r.one_minus_c:.3e} | {r.mu:.5g} | {1.0 / r.mu:.4g} | {_e(r.error)} |"
+                for r in study.largest_stick] + [""]
+        out += ["**c_max(γ) from 1/μ → 0 (quadratic through the three largest c)**", "",
+                "| γ | κ = (2/π) atanh γ | 1 − c_max | (1 − c_max) exp(π/κ) |", "|---|---|---|---|"]
+        out += [f"| {r.gamma:.4f} | {r.kappa:.6f} | {r.one_minus_c_max:.4e} | {r.ratio:.3f} |"
+                for r in study.largest_stick_estimates] + [""]
+    else:
+        out += ["(The largest stick radius c_max(γ) is studied in full mode only.)", ""]
+    shear = study.stick_shear
+    out += _matrix(shear, "max_difference", "(2.31): max over the stick zone of |q/(μp) − (1 − ψ)|")
+    out += _matrix(shear, "scaled", "(2.31): that maximum / γ², with the observed order",
+                   observed_orders(shear, "max_difference", "(2.31)"))
+    comp = study.compliance
+    out += _matrix(comp, "error", "(2.34): error P*₁ − P* of the first-order compliance")
+    out += _matrix(comp, "scaled", "(2.34): error / γ⁴, with the observed order",
+                   observed_orders(comp, "error", "(2.34)"))
+    if comp[0].scaled_second is not None:
+        out += _matrix(comp, "scaled_second", "P* = 1 + γ² P2 + γ⁴ P4: error / γ⁶, with the observed order",
+                       observed_orders(comp, "error_second", "second order"))
+    out += ["**(2.36): 1 + γ²/3 against the adhesive atanh(γ)/γ (B4)**", "",
+            "| γ | atanh(γ)/γ | error | error / γ⁴ (→ −1/5) |", "|---|---|---|---|"]
+    out += [f"| {r.gamma:.4f} | {r.exact:.10f} | {_e(r.error)} | {r.scaled:.4f} |" for r in study.adhesive_compliance]
+    return "\n".join(out) + "\n"
+
+
+def expansion_tables(fast: bool) -> str:
+    """Markdown of every check of §2.3 (``expansion_study`` then ``render_markdown``).
+
+    ``fast=True`` takes seconds, ``fast=False`` minutes (level-3 solves, the c_max study).
+    """
+    return render_markdown(expansion_study(fast))
+
+
+def expansion_errors(study: ExpansionStudy) -> ExpansionErrors:
+    """Worst |error| over the stick radii of the study at each gamma, per approximation."""
+
+    def worst(rows, value):
+        gs = sorted({r.gamma for r in rows})
+        return read_only(gs), read_only([max(abs(getattr(r, value)) for r in rows if r.gamma == g) for g in gs])
+
+    gamma, law = worst(study.friction_law, "relative_error")
+    second = study.friction_law[0].scaled_second is not None
+    law2 = worst(study.friction_law, "relative_error_second")[1] if second else None
+    _, comp = worst(study.compliance, "error")
+    comp2 = worst(study.compliance, "error_second")[1] if second else None
+    _, adhesive = worst(study.adhesive_compliance, "error")
+    stick_gamma, stick = worst(study.stick_shear, "max_difference")
+    return ExpansionErrors(gamma, law, law2, comp, comp2, adhesive, stick_gamma, stick)
+
+
+def plot_expansion_errors(path: str, study: ExpansionStudy | None = None, *, fast: bool = True) -> None:
+    """Log-log figure of ``expansion_errors`` against gamma, with gamma^2 and gamma^4 guides."""
+    import matplotlib
+    import matplotlib.ticker
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    e = expansion_errors(study if study is not None else expansion_study(fast))
+    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    ax.loglog(e.gamma, e.friction_law, "o-", label="(2.28) μ = γ f0(c): relative error")
+    ax.loglog(e.stick_gamma, e.stick_shear, "s-", label="(2.31) q/(μp) = 1 − ψ: max difference")
+    if e.friction_law_second is not None:
+        ax.loglog(e.gamma, e.friction_law_second, "^-", label="μ = γ(f0 + γ² f2): relative error")
+        ax.loglog(e.gamma, e.compliance_second, "x-", label="P* = 1 + γ² P2 + γ⁴ P4: error")
+    ax.loglog(e.gamma, e.compliance, "d-", label="(2.34) P* first order: error")
+    ax.loglog(e.gamma, e.adhesive_compliance, "v-", label="(2.36) 1 + γ²/3 vs atanh(γ)/γ")
+    g = np.geomspace(e.gamma[0], e.gamma[-1], 50)
+    guides = ((2, e.stick_shear[0] / 3.0), (4, e.compliance[0] / 3.0))
+    if e.compliance_second is not None:
+        guides += ((6, e.compliance_second[0] / 3.0),)
+    for n, below in guides:  # slope guides a factor 3 below the first point of a curve of that order
+        ax.loglog(g, below * (g / g[0]) ** n, "k:", lw=1)
+        ax.annotate("γ" + "⁰¹²³⁴⁵⁶"[n], (g[-1], below * (g[-1] / g[0]) ** n), fontsize=8, ha="left", va="center")
+    ax.xaxis.set_major_locator(matplotlib.ticker.FixedLocator([0.02, 0.05, 0.1, 0.2, 0.5]))
+    ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.set_xlabel("γ = (1 − 2ν)/(2 − 2ν)")
+    ax.set_ylabel("worst |error| over c")
+    ax.set_title("Expansions of [S75] §2.3 against the full solution")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

@@ -1,6 +1,7 @@
 """The committed documents in derivations/ are what the code regenerates, and the CLI runs."""
 
 import importlib.metadata
+import importlib.util
 import shutil
 import subprocess
 from pathlib import Path
@@ -30,3 +31,22 @@ def test_no_other_distribution_provides_our_packages():
     providers = importlib.metadata.packages_distributions()
     for package in ("asymptotics", "numeric"):
         assert set(providers.get(package, ["hertz-friction"])) == {"hertz-friction"}, providers.get(package)
+
+
+def _regenerate():
+    spec = importlib.util.spec_from_file_location("regenerate", ROOT / "derivations" / "regenerate.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_derivation_documents_are_current_fast_mode(capsys):
+    # fast mode: statements, steps, identities and fast-vs-precise of every part are regenerated
+    # (in this process, so the registry's checks are shared with tests/test_registry.py); the
+    # blocks computed with the full solver are kept as committed (the slow test checks those).
+    assert _regenerate().main(["--fast", "--check"]) == 0, capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_derivation_documents_are_current_full():
+    assert _regenerate().main(["--check"]) == 0

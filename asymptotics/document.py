@@ -1,0 +1,149 @@
+"""Render the registry's derivations as Markdown documents (one per part of the paper).
+
+A document is a sequence of named blocks, each between ``<!-- begin NAME -->`` and
+``<!-- end NAME -->`` lines, so that a check can regenerate the cheap blocks (statements,
+steps, identities) and compare them with a committed file whose expensive blocks (tables
+computed with the full solver, figures) it leaves alone. Imports SymPy and mpmath when
+called; ``import asymptotics`` does not import this module.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+
+import mpmath
+import numpy as np
+
+from .derivation import Derivation
+from .registry import PARTS, part
+
+__all__ = ["identity_residual", "fast_precise_difference", "render_part", "join", "blocks_of", "Block"]
+
+Block = tuple[str, str]  # (name, Markdown body)
+
+_BLOCK = re.compile(r"<!-- begin (?P<name>[^ ]+) -->\n(?P<body>.*?)<!-- end (?P=name) -->\n", re.S)
+
+
+def _once(f):
+    """Memoise on the identity of the (frozen, long-lived) registry object: each check is run
+    once per process, whether the tests or the documents ask first."""
+    results: dict[int, float] = {}
+
+    def wrapper(obj) -> float:
+        if id(obj) not in results:
+            results[id(obj)] = f(obj)
+        return results[id(obj)]
+
+    wrapper.__doc__ = f.__doc__
+    return wrapper
+
+
+@_once
+def identity_residual(identity) -> float:
+    """Largest |left - right| of an Identity over its points, at its working precision."""
+    with mpmath.workdps(identity.dps):
+        return max(float(abs(identity.residual(*point))) for point in identity.points)
+
+
+@_once
+def fast_precise_difference(d: Derivation) -> float:
+    """Largest relative difference between ``d.fast`` and ``d.precise`` at the comparison points
+    (elementwise for results with several components; absolute where the exact value is 0)."""
+    worst = 0.0
+    with mpmath.workdps(30):
+        for point in d.comparison.points:
+            exact = d.precise(*point)
+            exact = np.array([float(v) for v in (exact if isinstance(exact, (list, tuple)) else [exact])])
+            value = np.atleast_1d(np.asarray(d.fast(*point), dtype=float))
+            scale = np.where(exact == 0.0, 1.0, np.abs(exact))
+            worst = max(worst, float(np.max(np.abs(value - exact) / scale)))
+    return worst
+
+
+def _latex(expr) -> str:
+    import sympy
+
+    return expr if isinstance(expr, str) else sympy.latex(expr)
+
+
+def _math(expr) -> str:
+    return f"$$\n{_latex(expr)}\n$$"
+
+
+def _sig(value: float) -> str:
+    return "0" if value == 0.0 else f"{value:.0e}"
+
+
+def _summary(entries: tuple[Derivation, ...]) -> str:
+    rows = ["| result | what | agrees with the paper | identities checked numerically | fast vs precise |",
+            "|---|---|---|---|---|"]
+    for d in entries:
+        agree = "yes" if d.agrees else ("no, see note" if d.printed is not None else "(not in the paper)")
+        ids = ", ".join(f"{i.name} ({_sig(identity_residual(i))})" for i in d.identities) or "none"
+        cmp_ = _sig(fast_precise_difference(d)) if d.comparison else "-"
+        rows.append(f"| {d.label} | {d.title} | {agree} | {ids} | {cmp_} |")
+    return "\n".join(rows)
+
+
+def _name(f) -> str:
+    """`module.function` for a public function; "in the registry" for a wrapper made in a derivation."""
+    public = not f.__module__.startswith("asymptotics.derive") and f.__name__.isidentifier() and f.__name__[0] != "_"
+    return f"`{f.__module__}.{f.__name__}`" if public else "(a wrapper in the derivation module)"
+
+
+def _entry(d: Derivation) -> str:
+    lines = [f"## {d.label} {d.title}", "", "Derived:", "", _math(d.derived), ""]
+    if d.printed is not None:
+        verdict = "agrees" if d.agrees else "**differs** (see the note)"
+        lines += ["As printed in the paper (transcribed), which the derivation " + verdict + ":", "", _math(d.printed), ""]
+    if d.steps:
+        lines += ["Steps (SymPy):", ""]
+        for k, step in enumerate(d.steps, 1):
+            lines += [f"{k}. {step.text}", "", _math(step.expr), ""]
+    if d.identities:
+        lines += ["Steps SymPy cannot do, checked numerically with mpmath:", "",
+                  "| identity | statement | points | digits | max abs residual | tolerance |", "|---|---|---|---|---|---|"]
+        for i in d.identities:
+            lines.append(f"| {i.name} | ${i.statement}$ | {len(i.points)} | {i.dps} | {_sig(identity_residual(i))} | {_sig(i.tol)} |")
+        lines.append("")
+    if d.fast is not None:
+        lines.append(f"Numeric functions of ({', '.join(d.arguments)}): fast (numpy) {_name(d.fast)}"
+                     + (f", precise (mpmath) {_name(d.precise)}" if d.precise else "") + ".")
+        if d.comparison:
+            lines.append(f"Largest relative difference at {len(d.comparison.points)} points: "
+                         f"{_sig(fast_precise_difference(d))} (tolerance {_sig(d.comparison.rtol)}).")
+        lines.append("")
+    if d.note:
+        lines += [f"Note: {d.note}", ""]
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def render_part(name: str, extra: Mapping[str, str] | None = None) -> list[Block]:
+    """The blocks of the document of one part: header, summary, one per derivation, then ``extra``."""
+    title, _ = PARTS[name]
+    entries = part(name)
+    blocks: list[Block] = [
+        ("header", f"# {title}\n\nGenerated by `python derivations/regenerate.py` from `asymptotics.registry`; "
+                   "do not edit. [S75] = D. A. Spence, *J. Elasticity* 5 (1975) 297–319.\n"),
+        ("summary", _summary(entries) + "\n"),
+    ]
+    blocks += [(f"derivation{d.label}", _entry(d)) for d in entries]
+    blocks += list((extra or {}).items())
+    return blocks
+
+
+def join(blocks: list[Block]) -> str:
+    """The Markdown text of a document made of ``blocks``."""
+    return "\n".join(f"<!-- begin {name.replace(' ', '_')} -->\n{body.rstrip()}\n<!-- end {name.replace(' ', '_')} -->\n"
+                     for name, body in blocks)
+
+
+def blocks_of(text: str) -> dict[str, str]:
+    """The blocks of a committed document, name -> body (inverse of ``join``)."""
+    return {m["name"]: m["body"] for m in _BLOCK.finditer(text)}

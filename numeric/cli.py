@@ -115,6 +115,8 @@ def _build_parser() -> argparse.ArgumentParser:
 
     commands.add_parser("bench", help="the benchmark (arguments are passed on; bench --help for its own)",
                         add_help=False)
+    commands.add_parser("derivations", help="regenerate derivations/ (documents, figures) in a source checkout; "
+                        "arguments are passed on (derivations --help for its own)", add_help=False)
     commands.add_parser("tables", help="print the tables of Spence (1975) beside our recomputation and the exact values")
     return parser
 
@@ -319,11 +321,29 @@ def _run_figures(args) -> int:
     return 0
 
 
+def _run_derivations(argv: list[str]) -> int:
+    """Run ``derivations/regenerate.py`` of the source checkout this package is installed from."""
+    import runpy
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[1] / "derivations" / "regenerate.py"
+    if not script.exists():
+        sys.stderr.write("hertz-friction derivations: error: needs a source checkout installed with pip install -e "
+                         f"(no {script})\n")
+        return 2
+    try:
+        return runpy.run_path(str(script))["main"](argv)
+    except SystemExit as exc:  # its --help or a usage error
+        return exc.code if isinstance(exc.code, int) else 2
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hertz-friction`` console script; returns the exit code."""
     from .eigen import NoEigenvalueError, SolverError
 
     argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["derivations"]:  # the repository's generator, with its own arguments
+        return _run_derivations(argv[1:])
     if argv[:1] == ["bench"]:  # everything after "bench" belongs to the benchmark's own parser
         from .bench import main as bench_main
 

@@ -186,3 +186,9 @@ def test_bench_subcommand_passes_arguments_on(capsys):
     assert code == 0 and "usage: hertz-friction bench" in out and "--quick" in out
     code, _, err = run(capsys, ["bench", "--no-such-option"])
     assert code == 2 and "unrecognized arguments" in err
+
+
+def test_derivations_subcommand_runs_the_repository_generator(capsys):
+    assert main(["derivations", "--help"]) == 0
+    assert "--check" in capsys.readouterr().out
+    assert main(["derivations", "--no-such-flag"]) == 2

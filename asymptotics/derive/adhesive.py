@@ -23,7 +23,6 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 
 import mpmath
@@ -38,6 +37,7 @@ from ..adhesive import (central_pressure_adhesive, compliance_adhesive, pressure
                         shear_slope_adhesive, sphere_A_adhesive, sphere_C_adhesive,
                         sphere_central_pressure_adhesive, sphere_pressure_slope_adhesive)
 from ..derivation import Comparison, Derivation, Identity, Step
+from .precision import at_precision, exact
 
 __all__ = ["derivations"]
 
@@ -64,21 +64,6 @@ def _mp_centre(gamma_):
     return (kappa / gamma_ if gamma_ else 2 / mpmath.pi) * mpmath.cosh(mpmath.pi * kappa / 2)
 
 
-def _exact(residual: Callable) -> Callable:
-    """Convert the arguments of an Identity residual to mpf at the caller's precision."""
-
-    def wrapped(*args):
-        return residual(*(mpmath.mpf(a) for a in args))
-
-    return wrapped
-
-
-def _mp(func: Callable, dps: int = 40) -> Callable:
-    def wrapped(*args):
-        with mpmath.workdps(dps):
-            return func(*(mpmath.mpf(a) for a in args))
-
-    return wrapped
 
 
 _Z, _U = Symbol("z"), Symbol("u")
@@ -130,7 +115,7 @@ def _centre_identity(c2) -> Identity:
     return Identity(
         name="(B3) quadrature near x = 0",
         statement=r"p_0(x) = p_0(0)(1 + c_2x^2) + O(x^4),\ q_0(x) = \tfrac12\kappa p_0(0)x + O(x^3)",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((1e-9, 0.5), (1e-9, 0.2), (1e-9, 1 / 3)),
         tol=1e-26,  # O(x^3) = 1e-27 remainder of q0
     )
@@ -171,7 +156,7 @@ def _d410() -> Derivation:
         steps=tuple(steps),
         identities=(_centre_identity(c2),),
         fast=lambda gamma_: np.array([central_pressure_adhesive(gamma_), shear_slope_adhesive(gamma_)]),
-        precise=_mp(lambda gamma_: [_mp_centre(gamma_), _mp_kappa(gamma_) * _mp_centre(gamma_) / 2]),
+        precise=at_precision(lambda gamma_: [_mp_centre(gamma_), _mp_kappa(gamma_) * _mp_centre(gamma_) / 2]),
         arguments=("gamma",),
         comparison=Comparison(points=((1e-6,), (0.2,), (1 / 3,), (3 / 7,), (0.5,), (0.7,)), rtol=4e-15),
         note=(f"Slip: the paper prints P* = pi kappa/(2 gamma) = 1 + nu^2/3 + ...; the derivation gives "
@@ -216,7 +201,7 @@ def _b1_identity() -> Identity:
         name="(B1) = (B3)",
         statement=(r"-\tfrac{2}{\pi}C_h\tfrac{d}{dx}\int_x^1\binom{w\cos\kappa\theta}{\sin\kappa\theta}\tfrac{dw}{\sqrt{w^2-x^2}}"
                    r" = \binom{x p_0}{q_0}\ \text{of (B3)}"),
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.3, 0.5), (0.8, 0.5), (0.5, 0.2)),
         dps=30,
         tol=1e-20,  # numerical differentiation of a quadrature
@@ -283,7 +268,7 @@ def _cos_integral_identity() -> Identity:
     return Identity(
         name="int_0^1 cos(kappa theta) dw",
         statement=r"\int_0^1\cos\kappa\theta\,dw = \int_0^\infty\frac{\cos\kappa\tau}{\cosh^2\tau}d\tau = \frac{\pi\kappa/2}{\sinh(\pi\kappa/2)}",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.1,), (0.35,), (1,), (3,)),
         tol=1e-30,
     )
@@ -322,7 +307,7 @@ def _db4() -> Derivation:
         steps=tuple(steps),
         identities=(_cos_integral_identity(),),
         fast=compliance_adhesive,
-        precise=_mp(lambda gamma_: mpmath.atanh(gamma_) / gamma_ if gamma_ else mpmath.mpf(1)),
+        precise=at_precision(lambda gamma_: mpmath.atanh(gamma_) / gamma_ if gamma_ else mpmath.mpf(1)),
         arguments=("gamma",),
         comparison=Comparison(points=((1e-8,), (0.1,), (1 / 3,), (0.5,), (0.74,), (0.99,)), rtol=1e-15),
         note="Agrees. The upper bound of P* in §2.1 (Shield & Anderson). App. B's '(1.27)' means (2.4).",
@@ -365,7 +350,7 @@ def _sinh_identity() -> Identity:
     return Identity(
         name="int_0^oo sin(kappa t)/sinh t dt",
         statement=r"\int_0^\infty\frac{\sin\kappa t}{\sinh t}dt = \frac{\pi}{2}\tanh\frac{\pi\kappa}{2}",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.1,), (0.35,), (1,), (2.5,)),
         tol=1e-30,
     )
@@ -418,7 +403,7 @@ def _db6() -> Derivation:
         steps=tuple(steps),
         identities=(_sinh_identity(),),
         fast=lambda gamma_: np.array([sphere_central_pressure_adhesive(gamma_), sphere_pressure_slope_adhesive(gamma_)]),
-        precise=_mp(lambda gamma_: [2 * _mp_centre(gamma_), -2 * _mp_centre(gamma_) * _mp_kappa(gamma_) * gamma_]),
+        precise=at_precision(lambda gamma_: [2 * _mp_centre(gamma_), -2 * _mp_centre(gamma_) * _mp_kappa(gamma_) * gamma_]),
         arguments=("gamma",),
         comparison=Comparison(points=((1e-6,), (0.2,), (1 / 3,), (0.5,), (0.7,)), rtol=4e-15),
         note=("Agrees. At nu = 0: p(0) = 1.615192, p'(0) = -0.282415 as quoted in §4.2. p'(0) is twice the "
@@ -447,7 +432,7 @@ def _m_identity() -> Identity:
     return Identity(
         name="kernel M(w) in closed form",
         statement=r"\int_0^w\frac{K'(s)\,ds}{\sqrt{w^2-s^2}} = -\frac1w - \frac{\log(1-w^2)}{w^3},\ K = \frac{1-\sqrt{1-s^2}}{1+\sqrt{1-s^2}}",
-        residual=_exact(lambda w_: _m_kernel_mp(w_) - _m_closed(w_)),
+        residual=exact(lambda w_: _m_kernel_mp(w_) - _m_closed(w_)),
         points=((0.05,), (0.3,), (0.7,), (0.95,)),
         tol=1e-30,
     )
@@ -472,7 +457,7 @@ def _a_identity() -> Identity:
     return Identity(
         name="A of (4.18) from (3.16)-edge with the adhesive shear",
         statement=(r"1 - \gamma\tfrac{2}{\pi}C_h\int_0^1\sin\kappa\theta(w)\,M(w)\,dw = 1 - \kappa^2\Psi_1(\kappa)"),
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.5,), (1 / 3,), (0.2,), (3 / 7,)),
         tol=1e-28,
     )
@@ -488,7 +473,7 @@ def _digamma_identity() -> Identity:
     return Identity(
         name="alternating sum as digamma",
         statement=r"\sum_{k\ge1}\frac{(-1)^{k-1}k}{k^2+\kappa^2/4} = \tfrac12\,\mathrm{Re}\left[\psi(1+\tfrac{i\kappa}4)-\psi(\tfrac12+\tfrac{i\kappa}4)\right]",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.1,), (0.35,), (1,), (1.9,), (5,)),
         tol=1e-30,
     )
@@ -551,7 +536,7 @@ def _d418() -> Derivation:
         steps=tuple(steps),
         identities=(_digamma_identity(), _m_identity(), _a_identity()),
         fast=fast,
-        precise=_mp(precise),
+        precise=at_precision(precise),
         arguments=("gamma",),
         comparison=Comparison(points=((0.05,), (0.2,), (1 / 3,), (3 / 7,), (0.5,), (0.7,)), rtol=4e-15),
         note=("A and C are quoted from Spence (1968) (4.12). Here Psi1 is summed in closed form "

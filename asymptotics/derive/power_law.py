@@ -37,6 +37,7 @@ from sympy import (Eq, Function, Integral, Rational, S, Symbol, Tuple, atanh, be
                    simplify, sqrt, symbols)
 
 from ..derivation import Comparison, Derivation, Identity, Step
+from .precision import at_precision, exact
 from ..power_law import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
                          frictionless_pressure_power_law)
 
@@ -96,7 +97,7 @@ def _euler_beta_identity() -> Identity:
     return Identity(
         name="Euler's Beta integral",
         statement=r"\int_0^1 v^{a-1}(1-v)^{b-1}\,dv = B(a,b)",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((1.25, 0.5), (2, 0.5), (0.75, 0.5), (3.5, 0.5), (1, 0.5)),
         dps=40,
         tol=1e-30,
@@ -117,23 +118,6 @@ def _abel_power(m) -> tuple[object, tuple[Step, ...]]:
     return value, steps
 
 
-def _exact(residual: Callable) -> Callable:
-    """Convert the arguments of an Identity residual to mpf at the caller's precision."""
-
-    def wrapped(*args):
-        return residual(*(mpmath.mpf(a) for a in args))
-
-    return wrapped
-
-
-def _mp(func: Callable, dps: int = 40) -> Callable:
-    """Evaluate ``func`` with mpmath at ``dps`` digits (arguments converted to mpf)."""
-
-    def wrapped(*args):
-        with mpmath.workdps(dps):
-            return func(*(mpmath.mpf(a) for a in args))
-
-    return wrapped
 
 
 def _frictionless_p_mp(x_, n_):
@@ -191,7 +175,7 @@ def _d35() -> Derivation:
         steps=tuple(steps),
         identities=(_euler_beta_identity(),),
         fast=fast,
-        precise=_mp(lambda n_: [factor_a(n_), factor_c(n_)]),
+        precise=at_precision(lambda n_: [factor_a(n_), factor_c(n_)]),
         arguments=("n",),
         comparison=Comparison(points=((0.25,), (0.5,), (1.0,), (2.0,), (3.0,), (7.5,), (40.0,)), rtol=4e-15),
         note=("fast returns (A A*, C*/C) = (a_star_factor(n), c_star_factor(n)). The text's later "
@@ -351,7 +335,7 @@ def _elliptic_kernel_identity() -> Identity:
     return Identity(
         name="Abel kernel of (3.16) is K(t)",
         statement=r"\int_0^t \frac{dx}{\sqrt{(1-x^2)(t^2-x^2)}} = K(t)",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.1,), (0.5,), (0.9,), (0.999,)),
         tol=1e-30,
     )
@@ -366,7 +350,7 @@ def _a316_frictionless_identity() -> Identity:
     return Identity(
         name="(3.16) for smooth indenters (A = B(n/2, 1/2)/2, p of 'frictionless-n')",
         statement=r"1 - \frac{1}{nA} = \frac{2}{\pi}\int_0^1 t K(t) p(t)\,dt",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.5,), (2,), (3,)),
         dps=30,
         tol=1e-25,
@@ -468,7 +452,7 @@ def _d317() -> Derivation:
         agrees=bool(sp.simplify(ratio - n / (n + 1)) == 0),
         steps=steps,
         fast=compliance_ratio,
-        precise=_mp(lambda n_: n_ / (n_ + 1)),
+        precise=at_precision(lambda n_: n_ / (n_ + 1)),
         arguments=("n",),
         comparison=Comparison(points=((0.5,), (1.0,), (2.0,), (3.0,)), rtol=1e-15),
         note=("Swapping the order is the integration by parts of the paper. fast/precise give P*/P0*. "
@@ -497,7 +481,7 @@ def _d318() -> Derivation:
         agrees=bool(simplify(centre - printed) == 0 and simplify(via_311 - printed) == 0),
         steps=steps,
         fast=central_pressure_ratio,
-        precise=_mp(lambda n_: n_ / (n_ - 1)),
+        precise=at_precision(lambda n_: n_ / (n_ - 1)),
         arguments=("n",),
         comparison=Comparison(points=((1.5,), (2.0,), (3.0,), (10.0,)), rtol=1e-15),
         note="fast/precise give p(0)/p0(0). For n <= 1 p is unbounded at x = 0.",
@@ -537,7 +521,7 @@ def _d319() -> Derivation:
         agrees=bool(ok and body_ok and simplify(pressure - printed) == 0 and simplify(value - (1 - x**2)) == 0),
         steps=steps,
         fast=lambda x_: frictionless_pressure_power_law(x_, 2.0),
-        precise=_mp(lambda x_: 4 / mpmath.pi * mpmath.sqrt((1 - x_) * (1 + x_))),
+        precise=at_precision(lambda x_: 4 / mpmath.pi * mpmath.sqrt((1 - x_) * (1 + x_))),
         arguments=("x",),
         comparison=Comparison(points=((0.0,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)), rtol=1e-15),
         note="The classical Hertz pressure; A = 1 as the paper says.",
@@ -569,7 +553,7 @@ def _d320() -> Derivation:
         agrees=bool(ok and same),
         steps=steps,
         fast=lambda x_: frictionless_pressure_power_law(x_, 1.0),
-        precise=_mp(lambda x_: 2 / mpmath.pi * mpmath.log((1 + mpmath.sqrt((1 - x_) * (1 + x_))) / x_)),
+        precise=at_precision(lambda x_: 2 / mpmath.pi * mpmath.log((1 + mpmath.sqrt((1 - x_) * (1 + x_))) / x_)),
         arguments=("x",),
         comparison=Comparison(points=((1e-300,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)), rtol=1e-15),
         note="A = pi/2 for the smooth cone (A* = 1 in (3.5)); p diverges logarithmically at the apex.",
@@ -586,7 +570,7 @@ def _euler_transformation_identity() -> Identity:
     return Identity(
         name="Euler's transformation of 2F1",
         statement=r"{}_2F_1(\tfrac12,\tfrac{n+1}2;\tfrac32;z) = (1-z)^{(1-n)/2}\,{}_2F_1(1,1-\tfrac n2;\tfrac32;z)",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.5, 0.3), (1.5, 0.9), (2.5, 0.5), (3, 0.99), (7.5, 0.2)),
         tol=1e-28,
     )
@@ -599,7 +583,7 @@ def _quadrature_identity() -> Identity:
     return Identity(
         name="closed form against quadrature of (3.13)",
         statement=r"n x^{n-1}\int_x^1 t^{-n}\tfrac{2}{\pi}(1-t^2)^{-1/2}dt = \tfrac{2n}{\pi}\sqrt{1-x^2}\,{}_2F_1(1,1-\tfrac n2;\tfrac32;1-x^2)",
-        residual=_exact(residual),
+        residual=exact(residual),
         points=((0.5, 0.1), (0.5, 0.9), (1.5, 0.01), (2.5, 0.5), (3, 0.3), (4, 0.999), (7.5, 0.6)),
         tol=1e-28,
     )
@@ -649,7 +633,7 @@ def _dfrictionless() -> Derivation:
         steps=tuple(steps),
         identities=(_euler_transformation_identity(), _quadrature_identity()),
         fast=frictionless_pressure_power_law,
-        precise=_mp(_frictionless_p_mp),
+        precise=at_precision(_frictionless_p_mp),
         arguments=("x", "n"),
         comparison=Comparison(
             points=tuple((x_, n_) for n_ in (0.3, 0.9, 1.0, 1.5, 2.0, 2.5, 3.0, 3.02, 4.0, 7.5, 20.0)

@@ -67,6 +67,9 @@ __all__ = [
     "C_MIN",
     "C_MAX",
     "f2",
+    "f2_over_f0",
+    "F2_SMALL_C_FIT",
+    "F2_SMALL_C_ERROR",
     "f2_quadrature",
     "mu_over_gamma_second_order",
     "compliance_p2",
@@ -264,8 +267,9 @@ def f2(c: ArrayLike) -> np.ndarray | float:
 
     Beyond [S75] (2.28) (whose f0 is the first term). Vectorised; a Chebyshev table for
     C_MIN <= c <= C_MAX (relative error ``F2_RELATIVE_ERROR`` of the table, ~1e-12, on top
-    of the ~1e-13 of the quadrature), the quadrature ``f2_quadrature`` (~1 s a point)
-    outside. Verified against the full solver for 0.1 <= c <= 0.9 (Richardson in gamma^2,
+    of the ~1e-13 of the quadrature), the quadrature ``f2_quadrature`` (~1 s a point) above
+    it, and below C_MIN the fit F2_SMALL_C_FIT of f2/f0 (accurate to F2_SMALL_C_ERROR, a
+    bound on the unknown limit as c -> 0). Verified against the full solver for 0.1 <= c <= 0.9 (Richardson in gamma^2,
     agreement 2e-10 ... 9e-9). f2 > 0 and increasing. Observed, not proven: f2/f0 = 0.468,
     0.472 at c = 1e-3, 1e-4; f2/f0^3 = 0.42, 0.39 at c = 0.999, 0.9999 (decreasing, 1/3 is
     suggested by a local argument).
@@ -285,8 +289,35 @@ def f2(c: ArrayLike) -> np.ndarray | float:
     0.2766803707
     """
     cs = _check_open_c(c)
-    ratio = _from_table(cs, "F2_RATIO", lambda x: f2_quadrature(x) / float(mu_over_gamma(x)))
-    return scalar_or_array(ratio * mu_over_gamma(cs))
+    return scalar_or_array(_f2_over_f0(cs) * mu_over_gamma(cs))
+
+
+#: Below the table (c < C_MIN, where the quadrature costs 10-80 s a point and loses accuracy
+#: below ~1e-9) f2/f0 is the fit 0.492 - 0.2/log(4/c) to the quadrature's 0.468, 0.472, 0.476,
+#: 0.478, 0.479 at c = 1e-3, 1e-4, 1e-5, 3e-6, 1e-6 (within 1e-3 there). Its limit as c -> 0 is
+#: not known: F2_SMALL_C_ERROR bounds |f2/f0 - fit| for callers (the limit anywhere in 0.482 ... 0.502).
+F2_SMALL_C_FIT = (0.492, 0.2)
+F2_SMALL_C_ERROR = 0.01
+
+
+def _f2_over_f0(cs: np.ndarray) -> np.ndarray:
+    ratio = np.empty(cs.shape)
+    small = cs < C_MIN
+    ratio[small] = F2_SMALL_C_FIT[0] - F2_SMALL_C_FIT[1] / np.log(4.0 / cs[small])  # log(4/c) > 0 for c < 1
+    ratio[~small] = _from_table(cs[~small], "F2_RATIO", lambda x: f2_quadrature(x) / float(mu_over_gamma(x)))
+    return ratio
+
+
+def f2_over_f0(c: ArrayLike) -> np.ndarray | float:
+    """f2(c)/f0(c): the relative gamma^2 correction of (2.28); see ``f2`` (c < C_MIN: the fit
+    F2_SMALL_C_FIT, within F2_SMALL_C_ERROR).
+
+    Examples
+    --------
+    >>> round(float(f2_over_f0(1e-3)), 3), round(float(f2_over_f0(1e-30)), 3)
+    (0.468, 0.489)
+    """
+    return scalar_or_array(_f2_over_f0(_check_open_c(c)))
 
 
 def mu_over_gamma_second_order(c: ArrayLike, gamma: ArrayLike) -> np.ndarray | float:

@@ -5,10 +5,12 @@ High-accuracy solver: ``flat_punch``, ``stick_radius``, ``friction_coefficient``
 the baseline, is ``numeric.spence1975``.
 """
 
-from .flat_punch import FlatPunchSolution, NoEigenvalueError, SolverError, flat_punch, friction_coefficient, stick_radius
+from .flat_punch import (AccuracyWarning, FlatPunchSolution, NoEigenvalueError, SolverError, flat_punch,
+                         friction_coefficient, stick_radius)
 from .power_law import PowerLawSolution, power_law
 
 __all__ = [
+    "AccuracyWarning",
     "FlatPunchSolution",
     "NoEigenvalueError",
     "PowerLawSolution",

@@ -232,23 +232,31 @@ def _krylov_root(factor: _Factor, D1_slip: np.ndarray, b: np.ndarray, ms: int, c
                     zz = np.linalg.solve(eye + delta * Hm, e1)
                 except np.linalg.LinAlgError:  # the model is singular at this delta: no root there
                     continue
-                candidates.append((abs(delta) * H[m, m - 1] * abs(zz[-1]) / beta, abs(delta), delta))
+                with np.errstate(over="ignore", invalid="ignore"):
+                    residual = abs(delta) * H[m, m - 1] * abs(zz[-1]) / beta
+                if math.isfinite(residual):  # an overflowing model solution is no root
+                    candidates.append((residual, abs(delta), delta))
             if not candidates:
                 continue
             candidates.sort(key=lambda t: (t[0] > 1e-13, t[1] if t[0] <= 1e-13 else t[0]))
             delta = candidates[0][2]
             try:
-                for _ in range(3):  # Newton polish on the model
-                    M = eye + delta * Hm
-                    zz = np.linalg.solve(M, e1)
-                    dz = -np.linalg.solve(M, Hm @ zz)
-                    F = (mu0 + delta) * (a_p @ zz) - c * (a_q @ zz)
-                    dF = a_p @ zz + (mu0 + delta) * (a_p @ dz) - c * (a_q @ dz)
-                    if dF == 0.0:
-                        break
-                    delta -= F / dF
-                zz = np.linalg.solve(eye + delta * Hm, e1)
+                # a nearly singular model (c within 1e-9 of 1 at large gamma) can overflow here:
+                # such a delta is not a root, and is skipped below instead of raising
+                with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                    for _ in range(3):  # Newton polish on the model
+                        M = eye + delta * Hm
+                        zz = np.linalg.solve(M, e1)
+                        dz = -np.linalg.solve(M, Hm @ zz)
+                        F = (mu0 + delta) * (a_p @ zz) - c * (a_q @ zz)
+                        dF = a_p @ zz + (mu0 + delta) * (a_p @ dz) - c * (a_q @ dz)
+                        if dF == 0.0 or not math.isfinite(F / dF):
+                            break
+                        delta -= F / dF
+                    zz = np.linalg.solve(eye + delta * Hm, e1)
             except np.linalg.LinAlgError:
+                continue
+            if not (math.isfinite(delta) and np.all(np.isfinite(zz))):
                 continue
             res_new = abs(delta) * H[m, m - 1] * abs(zz[-1]) / beta
             converged = abs(mu0 + delta - mu) < tol * max(1.0, mu0 + delta) and res_new < 1e-13

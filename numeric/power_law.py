@@ -70,7 +70,7 @@ from scipy import special
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_n, check_x
 
-from .flat_punch import DEFAULT_LEVEL, flat_punch
+from .flat_punch import flat_punch
 
 __all__ = [
     "PowerLawSolution",
@@ -675,6 +675,7 @@ def power_law(
     *,
     gamma: float | None = None,
     level: int | None = None,
+    rtol: float | None = None,
 ) -> PowerLawSolution:
     """Solve the frictional contact of a power-law indenter z ~ r^n, [S75] §3.
 
@@ -687,7 +688,7 @@ def power_law(
     (1.0, 1.018591635788)
     """
     n_value = check_n(n)
-    flat = flat_punch(nu=nu, mu=mu, c=c, gamma=gamma, level=DEFAULT_LEVEL if level is None else level)
+    flat = flat_punch(nu=nu, mu=mu, c=c, gamma=gamma, level=level, rtol=rtol)
     return PowerLawSolution(
         n=n_value,
         nu=flat.nu,

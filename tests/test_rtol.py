@@ -1,0 +1,265 @@
+"""rtol routes of numeric.flat_punch, the asymptotic hand-over at small c, and the regressions of the
+stability sweep (derivations/stability.md): bugs 1-5 of issue 5's stress tests.
+
+References are independent of the route under test: the solver at level 3 (its own error estimate
+~1e-12, checked against level 4 in tests/test_flat_punch.py) for asymptotic and table routes, and
+closed forms where the route is asymptotic in a limit (c = 4 exp(-1/f0) when c underflows K').
+"""
+
+import math
+import time
+import warnings
+from functools import lru_cache
+
+import numpy as np
+import pytest
+from scipy import optimize
+
+from asymptotics.flat_punch import compliance_first_order, frictionless_pressure, mu_over_gamma, shear_ratio_first_order
+from asymptotics.materials import gamma_from_nu, kappa_from_gamma
+from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
+from numeric import NoEigenvalueError, power_law
+from numeric.flat_punch import (
+    C_ASYMPTOTIC,
+    AccuracyWarning,
+    _law_bracket,
+    _table_meets,
+    flat_punch,
+    friction_coefficient,
+    stick_radius,
+)
+
+
+@lru_cache(maxsize=None)
+def _reference(nu: float, **given):
+    # level 3: error estimate ~1e-12 (each returned .error is checked below)
+    return flat_punch(nu=nu, level=3, **given)
+
+
+def _ref_c(nu, c):
+    return _reference(nu, c=c)
+
+
+def _ref_mu(nu, mu):
+    return _reference(nu, mu=mu)
+
+
+# ----------------------------------------------------------------------------- arguments
+@pytest.mark.parametrize("call", [
+    lambda: flat_punch(nu=0.25, c=0.5, level=2, rtol=1e-6),
+    lambda: stick_radius(0.2, 0.25, level=2, rtol=1e-6),
+    lambda: friction_coefficient(0.5, 0.25, level=2, rtol=1e-6),
+    lambda: power_law(2, nu=0.25, c=0.5, level=2, rtol=1e-6),
+])
+def test_level_and_rtol_together_raise(call):
+    with pytest.raises(ValueError, match="rtol"):
+        call()
+
+
+@pytest.mark.parametrize("rtol", [0.0, -1e-3, math.nan, math.inf])
+def test_bad_rtol_raises_naming_it(rtol):
+    with pytest.raises(ValueError, match="rtol"):
+        flat_punch(nu=0.25, c=0.5, rtol=rtol)
+
+
+# ----------------------------------------------------------------------------- route choice, given c
+# (nu, rtol, expected route). gamma = 0.0196 (nu = .49), 0.0909 (.45), 1/3 (.25). The first-order bound
+# is K2 gamma^2 with K2 = 0.95 (gamma <= 0.2), 1.13 (<= 0.4); second order K4 gamma^4, K4 = 1.15, 1.27:
+# nu = .49: 3.6e-4 and 1.7e-7; nu = .45: 7.9e-3 and 7.9e-5; nu = .25: 0.126 and 0.016.
+GIVEN_C_ROUTES = [
+    (0.49, 1e-2, "asymptotic, first order"),
+    (0.49, 1e-6, "asymptotic, second order"),
+    (0.49, 1e-9, "solver level"),
+    (0.45, 1e-2, "asymptotic, first order"),
+    (0.45, 1e-4, "asymptotic, second order"),
+    (0.45, 1e-6, "solver level 1"),
+    (0.25, 1e-2, "solver level 1"),
+    (0.25, 1e-8, "solver level 2"),  # level 1's error 7.6e-9 > 1e-8 mu = 1.8e-9: one level up
+    (0.25, 1e-10, "solver level 3"),
+]
+
+
+@pytest.mark.parametrize("nu, rtol, route", GIVEN_C_ROUTES)
+def test_given_c_route_and_accuracy(nu, rtol, route):
+    s = flat_punch(nu=nu, c=0.5, rtol=rtol)
+    ref = _ref_c(nu, 0.5)
+    assert s.route.startswith(route), s.route
+    # the promise: within rtol of the value, and within the stated error (plus the reference's own)
+    assert abs(s.mu - ref.mu) <= rtol * ref.mu + ref.error, (s.mu, ref.mu)
+    assert abs(s.mu - ref.mu) <= s.error + ref.error
+    assert abs(s.compliance - ref.compliance) <= s.error + ref.error
+
+
+GIVEN_MU_ROUTES = [
+    (0.49, 0.01, 1e-2, "asymptotic, first order"),
+    (0.49, 0.01, 1e-4, "asymptotic, second order"),
+    (0.45, 0.05, 1e-2, "asymptotic, second order"),  # first order: c bound 1.5e-2 > rtol
+    (0.45, 0.05, 1e-4, "solver level 1"),
+    (0.25, 0.2, 1e-2, "solver level 1"),
+    (0.25, 0.2, 1e-10, "solver level 3"),
+]
+
+
+@pytest.mark.parametrize("nu, mu, rtol, route", GIVEN_MU_ROUTES)
+def test_given_mu_route_and_accuracy(nu, mu, rtol, route):
+    s = flat_punch(nu=nu, mu=mu, rtol=rtol)
+    ref = _ref_mu(nu, mu)
+    assert s.route.startswith(route), s.route
+    assert abs(s.c - ref.c) <= rtol * ref.c + ref.error, (s.c, ref.c)
+    assert abs(s.c - ref.c) <= s.error + ref.error
+    assert abs(s.compliance - ref.compliance) <= s.error + ref.error
+
+
+def test_default_route_is_unchanged():
+    assert flat_punch(nu=0.25, c=0.5).route.startswith("solver level 2")
+    assert flat_punch(nu=0.49, c=0.5).route.startswith("solver level 2")  # no rtol: no asymptotic route at c = .5
+
+
+# ----------------------------------------------------------------------------- sweeps
+def test_sweep_routes_meet_rtol():
+    # friction_coefficient: table (1e-10 in mu) for rtol >= 1e-10; asymptotic where the law suffices
+    ref = _ref_c(0.25, 0.5)
+    for rtol in (1e-2, 1e-6, 1e-10, 1e-12):
+        mu = friction_coefficient(0.5, 0.25, rtol=rtol)
+        assert abs(mu - ref.mu) <= rtol * ref.mu + ref.error, rtol
+    ref = _ref_mu(0.25, 0.2)
+    for rtol in (1e-2, 1e-6, 1e-9):
+        c = stick_radius(0.2, 0.25, rtol=rtol)
+        assert abs(c - ref.c) <= rtol * ref.c + ref.error, rtol
+    ref = _ref_c(0.49, 0.5)
+    mu = friction_coefficient(np.array([0.5, 0.5]), np.array([0.49, 0.49]), rtol=1e-2)
+    assert np.all(np.abs(mu - ref.mu) <= 1e-2 * ref.mu)
+
+
+def test_table_bound_for_c_divides_by_the_slope():
+    # c from the table: error 1e-10 in mu over d log mu/d log c (0.7 at c = .58, gamma = 1/3) > 1e-10
+    c = np.array([0.5755548951])
+    assert not _table_meets("c", c, 1e-10)[0] and _table_meets("c", c, 1e-9)[0]
+    assert _table_meets("mu", np.array([0.2]), 1e-10)[0] and not _table_meets("mu", np.array([0.2]), 1e-11)[0]
+
+
+# ----------------------------------------------------------------------------- unreachable rtol
+def test_unreachable_rtol_warns_and_returns_the_best():
+    # c = 1e-4: only levels 1-2 reach it (LEVEL_C_MIN); their error ~1e-10 mu misses 1e-13
+    with pytest.warns(AccuracyWarning, match="not met"):
+        s = flat_punch(nu=0.25, c=1e-4, rtol=1e-13)
+    assert s.route.startswith("solver level 2") and "does not reach" in s.route
+    # below the solver's reach only the asymptotic law is left
+    with pytest.warns(AccuracyWarning, match="not met"):
+        s = flat_punch(nu=0.25, c=1e-7, rtol=1e-6)
+    assert s.route.startswith("asymptotic, second order")
+
+
+def test_no_warning_when_rtol_is_met():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", AccuracyWarning)
+        flat_punch(nu=0.25, c=0.5, rtol=1e-6)
+        flat_punch(nu=0.25, c=1e-7, rtol=0.05)  # asymptotic bound 0.017 mu, P* 3.7e-4
+
+
+# ----------------------------------------------------------------------------- the hand-over at c = 1e-5
+@pytest.mark.parametrize("gamma", [0.2, 0.5, 0.75])
+def test_handover_given_c_is_continuous_within_the_stated_error(gamma):
+    # measured |mu_solver - mu_law| / (the law's stated error) = 0.18, 0.46, 0.61
+    solver = flat_punch(gamma=gamma, c=C_ASYMPTOTIC)
+    law = flat_punch(gamma=gamma, c=C_ASYMPTOTIC * (1 - 1e-12))
+    assert solver.route.startswith("solver level 1") and law.route.startswith("asymptotic, second order")
+    assert abs(solver.mu - law.mu) <= law.error + solver.error
+    assert abs(solver.compliance - law.compliance) <= law.error + solver.error
+
+
+@pytest.mark.parametrize("gamma", [0.2, 0.75])
+def test_handover_given_mu_is_continuous_within_the_stated_range(gamma):
+    # mu just above the law's mu at c = 1e-5 goes to the solver; its c must lie in the range the
+    # law states just below (measured solver c = 9.94e-6 and 1.64e-6 against the law's 1e-5)
+    log_mu = optimize.brentq(lambda t: math.log(_law_bracket(math.exp(t), gamma, 2).c / C_ASYMPTOTIC),
+                             math.log(2e-3), math.log(0.5), xtol=1e-14)
+    mu = math.exp(log_mu)
+    for _ in range(100):  # a few ulps up, to the solver's side
+        if _law_bracket(mu, gamma, 2).c >= C_ASYMPTOTIC:
+            break
+        mu = math.nextafter(mu, math.inf)
+    solver = flat_punch(gamma=gamma, mu=mu)
+    law = flat_punch(gamma=gamma, mu=mu * (1 - 1e-12))
+    assert solver.route.startswith("solver level 1") and law.route.startswith("asymptotic")
+    bracket = _law_bracket(mu * (1 - 1e-12), gamma, 2)
+    assert bracket.lo - solver.error <= solver.c <= bracket.hi + solver.error
+    assert abs(solver.compliance - law.compliance) <= law.error + solver.error
+
+
+# ----------------------------------------------------------------------------- asymptotic fields
+def test_asymptotic_fields_are_first_order_and_close_to_the_solver():
+    s = flat_punch(nu=0.45, c=0.5, rtol=1e-2)
+    g = s.gamma
+    x = np.array([0.0, 0.2, 0.45, 0.6, 0.9])
+    assert np.array_equal(s.pressure(x), frictionless_pressure(x))
+    assert np.allclose(s.shear(x), s.mu * frictionless_pressure(x) * shear_ratio_first_order(x, 0.5), rtol=1e-15)
+    with pytest.raises(NotImplementedError, match="slip"):
+        s.slip(0.7)
+    ref = _ref_c(0.45, 0.5)
+    # O(gamma^2) relative (derivations/section_2_3.md: max |q/(mu p) - (1 - psi)| = 0.12 gamma^2 at c = .5);
+    # gamma^2 = 8.3e-3, checked at 1 gamma^2
+    assert np.all(np.abs(s.pressure(x) / ref.pressure(x) - 1) <= g**2)
+    # q/mu: the shear ratio (2.31) (0.12 gamma^2 at c = .5) times p (measured 0.63 gamma^2 off at x = .6);
+    # checked at 1 gamma^2 p. q itself also carries the law's error of mu, which the route's error covers
+    assert np.all(np.abs(s.shear(x[1:]) / s.mu - ref.shear(x[1:]) / ref.mu) <= g**2 * ref.pressure(x[1:]))
+    assert abs(s.mu - ref.mu) <= s.error
+
+
+# ----------------------------------------------------------------------------- regressions 1-5
+@pytest.mark.parametrize("nu, mu", [(-0.99, 1e-4), (-0.5, 1e-4), (0.0, 1e-4), (0.25, 1e-4), (0.45, 1e-4),
+                                    (-0.99, 0.01), (-0.5, 0.01), (0.0, 0.01)])
+def test_bug1_2_tiny_mu_returns_the_asymptotic_law_fast(nu, mu):
+    # was: scipy ValueError from brentq (bug 1), or 67 s then SolverError (bug 2, nu = 0, mu = .01)
+    start = time.perf_counter()
+    s = flat_punch(nu=nu, mu=mu)
+    assert time.perf_counter() - start < 1.0  # measured 3-15 ms
+    assert s.route.startswith("asymptotic, second order") and math.isfinite(s.error)
+    g = gamma_from_nu(nu)
+    # independent of the inversion: for c < 1e-150 K'(c) = log(4/c) exactly in doubles and
+    # atanh(c)/c = 1, so mu/gamma = (1 + R g^2)/log(4/c) gives c = 4 exp(-g (1 + R g^2)/mu)
+    if s.c < 1e-150:
+        r = R_SMALL_C[0] - R_SMALL_C[1] / math.log(4 / s.c) if s.c > 0 else R_SMALL_C[0]
+        assert s.c == pytest.approx(4 * math.exp(-g * (1 + r * g**2) / mu), rel=1e-10, abs=1e-320)
+    # P* - 1 = gamma^2 P2(c) with P2 -> rho f0 as c -> 0, rho from (2.34) as implemented independently
+    # (asymptotics.flat_punch.compliance_first_order, tanh-sinh) at c = 1e-300, and f0 = mu/(gamma (1 + R gamma^2))
+    c_rho = max(s.c, 1e-300)
+    rho = (compliance_first_order(c_rho, 0.5) - 1.0) / (0.25 * float(mu_over_gamma(c_rho)))  # (2.34) ~ gamma^2
+    r = R_SMALL_C[0] - R_SMALL_C[1] / math.log(4 / c_rho)
+    assert abs(s.compliance - 1.0 - g * rho * mu / (1 + r * g**2)) <= s.error
+    assert s.shear(0.5) == pytest.approx(mu * float(frictionless_pressure(0.5)), rel=1e-12) or s.c > 0.5
+
+
+def _gap(gamma):
+    return math.exp(-math.pi / float(kappa_from_gamma(gamma)))
+
+
+def test_bug3_5_large_mu_at_large_gamma_is_solved_or_bracketed_quickly():
+    # was: SolverError naming c = 0.99999999895 (bug 3); RuntimeWarning overflow (an error here) and
+    # 30-60 s (bug 5). mu = 10 at gamma = .749 now solves (c below c_max); mu = 1e4 is bracketed
+    start = time.perf_counter()
+    s = flat_punch(gamma=0.749, mu=10.0)
+    assert s.route.startswith("solver level 2") and abs(s.mu / 10.0 - 1) < 1e-9
+    assert s.c < 1 - 7.5 * _gap(0.749)
+    for gamma, mu in ((0.749, 1e4), (2 / 3, 1000.0)):
+        b = flat_punch(gamma=gamma, mu=mu)
+        assert b.route.startswith("bracketed") and "c_max" in b.route
+        # c: the midpoint of (c_top, c_hi) = (1 - 8.4 e, 1 - 7.5 e), e = exp(-pi/kappa); error >= half-width
+        assert b.c == pytest.approx(1 - 7.95 * _gap(gamma), rel=1e-14) and b.error >= 0.45 * _gap(gamma)
+    assert time.perf_counter() - start < 15.0  # measured 4.5 s for the three
+
+
+@pytest.mark.parametrize("gamma, c", [(0.749, 0.96), (0.749, 0.99), (0.749, 1 - 1e-6), (2 / 3, 0.985),
+                                      (2 / 3, 0.983), (0.5, 0.9995)])
+def test_bug4_above_c_max_raises_no_eigenvalue_error_naming_c_max(gamma, c):
+    # c_max = 0.9504, 0.9826, 0.9990 (1 - 8 exp(-pi/kappa)); 0.983 at gamma = 2/3 lies within the
+    # estimate's margin and reaches the solver first (measured 3.6 s), the others are refused at once
+    start = time.perf_counter()
+    with pytest.raises(NoEigenvalueError, match="c_max"):
+        flat_punch(gamma=gamma, c=c)
+    assert time.perf_counter() - start < 10.0
+
+
+def test_power_law_passes_rtol_through():
+    h = power_law(2, nu=0.45, c=0.5, rtol=1e-2)
+    assert h.flat.route.startswith("asymptotic, first order")

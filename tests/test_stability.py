@@ -221,3 +221,14 @@ def test_quick_report(tmp_path):
     assert "## Sweep summary" in text and "## Plateau past convergence" in text
     assert "Calls returning a non-finite or out-of-range value: 0." in text
     assert ", 0 with |value - reference| > error." in text
+
+
+@pytest.mark.slow  # the whole sweep of derivations/stability.md: ~30 s CPU
+def test_full_sweep_has_no_silent_failures():
+    from numeric.stability import FULL_GRID
+
+    nus, mus, cs = FULL_GRID
+    points = sweep(nus, mus, cs, power_law_nus=(-0.99, 0.0, 0.4999), power_law_mus=(1e-4, 0.1, 1.0, 1e4))
+    assert all(p.admissible for p in points if not p.raised)  # finite, in range
+    # the only failure allowed: a stick radius above the largest one, said as such
+    assert all(p.raised.startswith("NoEigenvalueError") and "c_max" in p.raised for p in points if p.raised)

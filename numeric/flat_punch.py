@@ -23,7 +23,7 @@ third level is solved and the larger difference is reported if they do not shrin
 Routes (``route`` of the result names the one taken): closed forms in the limits; the solver;
 the asymptotic law mu/gamma = f0(c) (2.28) or f0 + gamma^2 f2 (``asymptotics.second_order``)
 below c = 1e-5, where the solver does not converge, and wherever ``rtol`` allows it
-(c <= 0.9), with error bounds measured against the solver (``K2_BOUNDS``, ``K4_BOUNDS``,
+(c <= 0.9), with error bounds measured against the solver (``numeric.asymptotic_law.K2_BOUNDS``, ``K4_BOUNDS``,
 ``KP2_BOUND``, ``KP4_BOUND``; first-order stresses, O(gamma^2)); a bracket for given mu
 beyond what the solver reaches near the largest stick radius c_max = 1 - 8 exp(-pi/kappa).
 ``rtol`` takes the cheapest route that meets it and warns (``AccuracyWarning``) where none does.
@@ -50,12 +50,11 @@ from scipy import optimize
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.arrays import scalar_or_array
-from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma, shear_ratio_first_order
-from asymptotics.flat_punch import stick_radius as first_order_stick_radius
+from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, kappa_from_gamma, resolve_gamma
-from asymptotics.second_order import C_MIN as F2_TABLE_C_MIN
-from asymptotics.second_order import F2_SMALL_C_ERROR, F2_SMALL_C_FIT, compliance_p2, compliance_p4, f2_over_f0
 
+from .asymptotic_law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,
+                             law_bound, law_bracket, law_compliance, route_text)
 from .discretize import LEVELS
 from .eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
 from .eigen_table import table_available, table_friction_coefficient, table_stick_radius
@@ -243,119 +242,6 @@ LEVEL_TYPICAL_ERROR = {1: 1e-8, 2: 1e-10, 3: 1e-12}
 #: its build checks, but 5.2e-11 was measured at the corner c = 0.95, gamma = 2/3; twice that.
 TABLE_MU_RTOL = 1e-10
 
-# ---------------------------------------------------------------------------------------
-# The asymptotic route: mu/gamma = f0(c) (first order, (2.28)) or f0(c) (1 + R(c) gamma^2),
-# R = f2/f0 (asymptotics.second_order), with error bounds measured against the full solution.
-
-#: The asymptotic route is offered for c <= ASYMPTOTIC_C_MAX only (its error grows without bound
-#: toward c_max).
-ASYMPTOTIC_C_MAX = 0.9
-#: Envelopes in gamma of |mu/mu_law - 1| for 0 < c <= 0.9: the value at the first breakpoint >= gamma.
-#: Measured maxima over c in [1e-3, 0.9] (always at c = 0.9; every maximum grows with gamma): the
-#: Chebyshev table (1e-10) at gamma = 0.05 ... 2/3 on 90 values of c, level-2 solves at gamma = 0.7,
-#: 0.75 (error estimates <= 1.3e-7); first order / gamma^2 = 0.86, 0.92, 1.02, 1.21, 1.56, 2.04, 2.62,
-#: 4.26, second order / gamma^4 = 1.04, 1.08, 1.15, 1.29, 1.59, 2.01, 2.60, 4.16 at the breakpoints.
-#: Below c = 1e-3 (level 1-2 solves at c = 1e-3, 1e-4, 1e-5, gamma = 0.2 ... 0.7) they are smaller:
-#: 0.48 ... 0.72 and 0.32 ... 0.50 (f4/f0 ~ 0.3 + 0.4 gamma^2). Each bound is 10 % above the maximum.
-GAMMA_BREAKS = (0.2, 0.3, 0.4, 0.5, 0.6, 2.0 / 3.0, 0.7, 0.75)
-K2_BOUNDS = (0.95, 1.02, 1.13, 1.33, 1.72, 2.24, 2.89, 4.69)
-K4_BOUNDS = (1.15, 1.19, 1.27, 1.43, 1.75, 2.22, 2.87, 4.58)
-#: |P* - law| / (gamma^4 f0(c)) (first order, 1 + gamma^2 P2) and / (gamma^6 f0(c)) (second order,
-#: + gamma^4 P4): P* - 1 vanishes with f0 as c -> 0. Measured maxima (same data, c = 1e-3 ... 0.9):
-#: 0.18 ... 0.26 and 0.12 ... 0.19 at gamma = 0.05 ... 2/3 (at c ~ 0.67), 0.30 and 0.22 at gamma = 0.75
-#: (c = 0.5); 15 % above.
-KP2_BOUND, KP4_BOUND = 0.35, 0.26
-#: Below c = 1e-3 the laws' errors are smaller than at c = 0.9: measured |mu/mu_law - 1| / gamma^2 =
-#: 0.48 ... 0.72 (first order) and / gamma^4 = 0.32 ... 0.50 (second order, with the quadrature's f2)
-#: at c = 1e-3, 1e-4, 1e-5, gamma = 0.2 ... 0.7 (level 1-2 solves; they grow slowly as c decreases
-#: and with gamma: 0.78 and 0.43 at gamma = 0.75, c = 1e-3); bounds about 30 % above.
-K2_SMALL_C, K4_SMALL_C = 1.0, 0.7
-#: P2/f0 as c -> 0: 0.36338 at c = 1e-100 and at 1e-300 (compliance_p2 / mu_over_gamma); used where c underflows.
-P2_OVER_F0_AT_ZERO = 0.36338
-
-
-def _envelope(bounds: tuple[float, ...], gamma: float) -> float:
-    for g, k in zip(GAMMA_BREAKS, bounds, strict=True):
-        if gamma <= g:
-            return k
-    return math.inf  # gamma > 3/4 (dissimilar bodies): not measured
-
-
-def _ratio_f2(c: float) -> float:
-    """R = f2/f0 at c (asymptotics.second_order: its table, the small-c fit below it)."""
-    if c <= 0.0:
-        return F2_SMALL_C_FIT[0]
-    return float(f2_over_f0(min(c, 0.999)))  # only bracket ends beyond ASYMPTOTIC_C_MAX pass 0.999; unused
-
-
-def _law_bound(c: float, gamma: float, order: int) -> float:
-    """Bound of |mu/mu_law - 1| at stick radius c for the law of this order (0: (2.28), 2: with f2)."""
-    if gamma > GAMMA_BREAKS[-1]:
-        return math.inf  # not measured
-    if c < F2_TABLE_C_MIN:
-        return K2_SMALL_C * gamma**2 if order == 0 else K4_SMALL_C * gamma**4 + F2_SMALL_C_ERROR * gamma**2
-    return _envelope(K2_BOUNDS if order == 0 else K4_BOUNDS, gamma) * gamma ** (2 + order)
-
-
-def _law_stick_radius(mu: float, gamma: float, order: int) -> float:
-    """c with mu = gamma f0(c) (order 0: the inverse of (2.28) in asymptotics.flat_punch) or
-    mu = gamma f0(c) (1 + R(c) gamma^2) (order 2: Brent in logit(c) below the order-0 c, the law
-    increasing in c); 0 where c underflows."""
-    c0 = float(first_order_stick_radius(mu, gamma=gamma))
-    if order == 0 or c0 == 0.0:
-        return c0
-    target = math.log(mu / gamma)
-
-    def h(s: float) -> float:
-        c = _expit(s)
-        return math.log(float(mu_over_gamma(c)) * (1.0 + _ratio_f2(c) * gamma**2)) - target
-
-    hi = _logit(min(c0, 1.0 - 2.0**-52))
-    if h(hi) <= 0.0:  # c0 = 1 in doubles (mu/gamma > 12), or the law's root is within rounding of c0
-        return c0
-    lo, step = hi - 1.0, 1.0
-    while h(lo) > 0.0:
-        lo, step = lo - step, 2.0 * step
-        if lo < -740.0:  # c < 1e-321: underflows
-            return 0.0
-    return _expit(optimize.brentq(h, lo, hi, xtol=1e-13, rtol=4.0 * np.finfo(float).eps))
-
-
-def _law_compliance(c: float, gamma: float, order: int, f0: float) -> tuple[float, float]:
-    """P* = 1 + gamma^2 P2 (+ gamma^4 P4 for order 2 and c >= 1e-3) and the bound of its error (f0 = f0(c))."""
-    p2 = P2_OVER_F0_AT_ZERO * f0 if c < 1e-100 else float(compliance_p2(c))
-    if order == 2 and c >= F2_TABLE_C_MIN:
-        return 1.0 + gamma**2 * p2 + gamma**4 * float(compliance_p4(c)), KP4_BOUND * gamma**6 * f0
-    return 1.0 + gamma**2 * p2, KP2_BOUND * gamma**4 * f0
-
-
-_LAW_NAMES = {0: "first order (2.28)", 2: "second order (2.28) + gamma^2 f2"}
-
-
-@dataclass(frozen=True, slots=True)
-class _FirstOrderField:
-    """Stresses at first order in gamma: p = p^(0) (2.26), q = mu p^(0) (1 - psi) (2.31) on the stick
-    zone and mu p^(0) on the slip annulus; relative error O(gamma^2) (measured max |q/(mu p) - (1 - psi)|
-    = 0.06 ... 0.5 gamma^2 for c = 0.1 ... 0.9, derivations/section_2_3.md)."""
-
-    c: float
-    mu: float
-
-    def pressure(self, x: np.ndarray) -> np.ndarray:
-        return np.asarray(frictionless_pressure(x), dtype=float)  # (2.26)
-
-    def shear(self, x: np.ndarray) -> np.ndarray:
-        p = np.asarray(frictionless_pressure(x), dtype=float)
-        if self.c == 0.0:  # c underflowed: slip everywhere
-            return self.mu * p
-        return self.mu * p * np.asarray(shear_ratio_first_order(x, self.c), dtype=float)  # (2.31)
-
-    def slip(self, x: np.ndarray) -> np.ndarray:
-        raise NotImplementedError(
-            "the slip displacement (2.10) is not computed on the asymptotic route; use the solver "
-            "(give level=, or an rtol below this route's error bound; the solver needs c >= 1e-5)")
-
-
 def _graded_breakpoints(c: float) -> np.ndarray:
     """Breakpoints graded toward x = c (both sides) and toward the edge."""
     if c <= 0.0:
@@ -366,59 +252,30 @@ def _graded_breakpoints(c: float) -> np.ndarray:
     return points
 
 
-def _asymptotic_route(order: int, bound: float, bound_p: float, why: str) -> str:
-    return (f"asymptotic, {_LAW_NAMES[order]}: relative error of mu <= {bound:.2g} (measured bound, c <= "
-            f"{ASYMPTOTIC_C_MAX}), of P* <= {bound_p:.2g}; stresses at first order (2.26), (2.31), relative error "
-            f"O(gamma^2); no slip ({why})")
-
-
 def _asymptotic_given_c(nu, c: float, gamma: float, order: int, why: str) -> FlatPunchSolution:
     f0 = float(mu_over_gamma(c))
-    mu = gamma * f0 * (1.0 + _ratio_f2(c) * gamma**2 if order == 2 else 1.0)
-    bound = _law_bound(c, gamma, order)
-    compliance, bound_p = _law_compliance(c, gamma, order, f0)
+    mu = gamma * f0 * (1.0 + f2_ratio(c) * gamma**2 if order == 2 else 1.0)
+    bound = law_bound(c, gamma, order)
+    compliance, bound_p = law_compliance(c, gamma, order, f0)
     return FlatPunchSolution(nu, gamma, mu, c, compliance, max(bound * mu, bound_p),
-                             _asymptotic_route(order, bound, bound_p, why), _graded_breakpoints(c),
-                             _FirstOrderField(c, mu))
+                             route_text(order, bound, bound_p, why), _graded_breakpoints(c),
+                             FirstOrderField(c, mu))
 
 
-@dataclass(frozen=True, slots=True)
-class _Bracket:
-    """The law's stick radius for given mu and the range the true one lies in (mu/mu_law within the bound)."""
-
-    c: float
-    lo: float
-    hi: float
-    bound: float
-
-
-def _law_bracket(mu: float, gamma: float, order: int) -> _Bracket:
-    c = _law_stick_radius(mu, gamma, order)
-    # the true c solves mu_law(c) (1 + e) = mu with |e| <= bound, and mu_law increases with c;
-    # the bound is the small-c one only if the whole range lies below 1e-3
-    for at in (c, 1.0):
-        bound = _law_bound(at, gamma, order)
-        lo = _law_stick_radius(mu / (1.0 + bound), gamma, order)
-        hi = _law_stick_radius(mu / (1.0 - bound), gamma, order) if bound < 1.0 else 1.0
-        if hi < F2_TABLE_C_MIN or at == 1.0:
-            return _Bracket(c, lo, hi, bound)
-    raise AssertionError  # pragma: no cover
-
-
-def _asymptotic_given_mu(nu, mu: float, gamma: float, order: int, bracket: _Bracket, why: str) -> FlatPunchSolution:
+def _asymptotic_given_mu(nu, mu: float, gamma: float, order: int, bracket: Bracket, why: str) -> FlatPunchSolution:
     """The law's c for given mu; error of c from the bracket, of P* its bound plus its change over the bracket."""
-    ratio = 1.0 + (_ratio_f2(bracket.c) * gamma**2 if order == 2 else 0.0)
+    ratio = 1.0 + (f2_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
     values = [(float(compliance_adhesive(gamma)), 0.0) if c > 0.999 else  # P* <= P0* (B4), P* increases with c
-              _law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * ratio))
+              law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * ratio))
               for c in (bracket.c, bracket.lo, bracket.hi)]
     compliance, bound_p = values[0]
     error_p = bound_p + max(abs(v[0] - compliance) for v in values[1:])
     error_c = max(bracket.hi - bracket.c, bracket.c - bracket.lo)
     return FlatPunchSolution(nu, gamma, mu, bracket.c, compliance, max(error_c, error_p),
-                             _asymptotic_route(order, bracket.bound, bound_p,
+                             route_text(order, bracket.bound, bound_p,
                                                f"so {bracket.lo:.6g} <= c <= {bracket.hi:.6g}; {why}"),
                              _graded_breakpoints(bracket.c),
-                             _FirstOrderField(bracket.c, mu))
+                             FirstOrderField(bracket.c, mu))
 
 
 def _meets(sol: FlatPunchSolution, rtol: float, value: float) -> bool:
@@ -605,7 +462,7 @@ def flat_punch(
         route whose error meets ``error <= rtol * value`` is taken. A closed form in the
         limits; else the asymptotic law for c <= 0.9 (first order (2.28) where its measured
         bound K2(gamma) gamma^2 meets rtol, else second order (2.28) + gamma^2 f2 where
-        K4(gamma) gamma^4 does; ``K2_BOUNDS``, ``K4_BOUNDS``); else the solver at the first
+        K4(gamma) gamma^4 does; ``numeric.asymptotic_law.K2_BOUNDS``, ``K4_BOUNDS``); else the solver at the first
         level whose typical accuracy meets rtol (1: 1e-8, 2: 1e-10, 3: 1e-12, else 4), and
         finer levels while its ``error`` exceeds ``rtol * value``. If no route meets rtol,
         the most accurate result is returned with an ``AccuracyWarning``.
@@ -672,19 +529,19 @@ def flat_punch(
 
 
 def _cheap_asymptotic(nu, gamma: float, rtol: float, *, c: float | None = None, mu: float | None = None,
-                      bracket: _Bracket | None = None) -> FlatPunchSolution | None:
+                      bracket: Bracket | None = None) -> FlatPunchSolution | None:
     """The lowest-order asymptotic solution meeting rtol (c <= ASYMPTOTIC_C_MAX), or None."""
     for order in (0, 2):
         if c is not None:
-            if c > ASYMPTOTIC_C_MAX or _law_bound(c, gamma, order) > rtol:
+            if c > ASYMPTOTIC_C_MAX or law_bound(c, gamma, order) > rtol:
                 continue
             sol = _asymptotic_given_c(nu, c, gamma, order, f"meets rtol = {rtol:g}")
             if _meets(sol, rtol, sol.mu):
                 return sol
         else:
-            if min(_law_bound(0.0, gamma, order), _law_bound(0.5, gamma, order)) > 4.0 * rtol:
+            if min(law_bound(0.0, gamma, order), law_bound(0.5, gamma, order)) > 4.0 * rtol:
                 continue  # c's relative error is mu's over d log mu/d log c (2.7 at c = 0.9 for f0): cannot meet rtol
-            b = bracket if order == 2 and bracket is not None else _law_bracket(mu, gamma, order)
+            b = bracket if order == 2 and bracket is not None else law_bracket(mu, gamma, order)
             if b.hi > ASYMPTOTIC_C_MAX or b.c == 0.0:
                 continue
             if max(b.hi - b.c, b.c - b.lo) > rtol * b.c:
@@ -715,7 +572,7 @@ def _given_c(nu, c: float, gamma: float, level: int, rtol: float | None) -> Flat
 
 
 def _given_mu(nu, mu: float, gamma: float, level: int, rtol: float | None) -> FlatPunchSolution:
-    bracket = _law_bracket(mu, gamma, 2)
+    bracket = law_bracket(mu, gamma, 2)
     if rtol is not None:
         sol = _cheap_asymptotic(nu, gamma, rtol, mu=mu, bracket=bracket)
         if sol is not None:

@@ -19,10 +19,10 @@ from asymptotics.flat_punch import compliance_first_order, frictionless_pressure
 from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
 from numeric import NoEigenvalueError, power_law
+from numeric.asymptotic_law import law_bracket as _law_bracket
 from numeric.flat_punch import (
     C_ASYMPTOTIC,
     AccuracyWarning,
-    _law_bracket,
     _table_meets,
     flat_punch,
     friction_coefficient,

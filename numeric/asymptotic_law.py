@@ -1,0 +1,167 @@
+"""The asymptotic route of ``numeric.flat_punch``: the friction law of [S75] (2.28), alone or with
+its gamma^2 correction (``asymptotics.second_order``), with error bounds measured against the
+full solution, and the first-order stresses (2.26), (2.31) that go with it.
+
+Used where the caller's ``rtol`` allows it, and below the solver's reach (c < 1e-5). The bounds
+are envelopes of measured errors (the Chebyshev table and level-2 solves, see the comments);
+they are not proofs.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import optimize
+from scipy.special import expit, logit
+
+from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma, shear_ratio_first_order
+from asymptotics.flat_punch import stick_radius as first_order_stick_radius
+from asymptotics.second_order import C_MIN as F2_TABLE_C_MIN
+from asymptotics.second_order import F2_SMALL_C_ERROR, F2_SMALL_C_FIT, compliance_p2, compliance_p4, f2_over_f0
+
+# The asymptotic route: mu/gamma = f0(c) (first order, (2.28)) or f0(c) (1 + R(c) gamma^2),
+# R = f2/f0 (asymptotics.second_order), with error bounds measured against the full solution.
+
+#: The asymptotic route is offered for c <= ASYMPTOTIC_C_MAX only (its error grows without bound
+#: toward c_max).
+ASYMPTOTIC_C_MAX = 0.9
+#: Envelopes in gamma of |mu/mu_law - 1| for 0 < c <= 0.9: the value at the first breakpoint >= gamma.
+#: Measured maxima over c in [1e-3, 0.9] (always at c = 0.9; every maximum grows with gamma): the
+#: Chebyshev table (1e-10) at gamma = 0.05 ... 2/3 on 90 values of c, level-2 solves at gamma = 0.7,
+#: 0.75 (error estimates <= 1.3e-7); first order / gamma^2 = 0.86, 0.92, 1.02, 1.21, 1.56, 2.04, 2.62,
+#: 4.26, second order / gamma^4 = 1.04, 1.08, 1.15, 1.29, 1.59, 2.01, 2.60, 4.16 at the breakpoints.
+#: Below c = 1e-3 (level 1-2 solves at c = 1e-3, 1e-4, 1e-5, gamma = 0.2 ... 0.7) they are smaller:
+#: 0.48 ... 0.72 and 0.32 ... 0.50 (f4/f0 ~ 0.3 + 0.4 gamma^2). Each bound is 10 % above the maximum.
+GAMMA_BREAKS = (0.2, 0.3, 0.4, 0.5, 0.6, 2.0 / 3.0, 0.7, 0.75)
+K2_BOUNDS = (0.95, 1.02, 1.13, 1.33, 1.72, 2.24, 2.89, 4.69)
+K4_BOUNDS = (1.15, 1.19, 1.27, 1.43, 1.75, 2.22, 2.87, 4.58)
+#: |P* - law| / (gamma^4 f0(c)) (first order, 1 + gamma^2 P2) and / (gamma^6 f0(c)) (second order,
+#: + gamma^4 P4): P* - 1 vanishes with f0 as c -> 0. Measured maxima (same data, c = 1e-3 ... 0.9):
+#: 0.18 ... 0.26 and 0.12 ... 0.19 at gamma = 0.05 ... 2/3 (at c ~ 0.67), 0.30 and 0.22 at gamma = 0.75
+#: (c = 0.5); 15 % above.
+KP2_BOUND, KP4_BOUND = 0.35, 0.26
+#: Below c = 1e-3 the laws' errors are smaller than at c = 0.9: measured |mu/mu_law - 1| / gamma^2 =
+#: 0.48 ... 0.72 (first order) and / gamma^4 = 0.32 ... 0.50 (second order, with the quadrature's f2)
+#: at c = 1e-3, 1e-4, 1e-5, gamma = 0.2 ... 0.7 (level 1-2 solves; they grow slowly as c decreases
+#: and with gamma: 0.78 and 0.43 at gamma = 0.75, c = 1e-3); bounds about 30 % above.
+K2_SMALL_C, K4_SMALL_C = 1.0, 0.7
+#: P2/f0 as c -> 0: 0.36338 at c = 1e-100 and at 1e-300 (compliance_p2 / mu_over_gamma); used where c underflows.
+P2_OVER_F0_AT_ZERO = 0.36338
+
+
+def envelope(bounds: tuple[float, ...], gamma: float) -> float:
+    for g, k in zip(GAMMA_BREAKS, bounds, strict=True):
+        if gamma <= g:
+            return k
+    return math.inf  # gamma > 3/4 (dissimilar bodies): not measured
+
+
+def f2_ratio(c: float) -> float:
+    """R = f2/f0 at c (asymptotics.second_order: its table, the small-c fit below it)."""
+    if c <= 0.0:
+        return F2_SMALL_C_FIT[0]
+    return float(f2_over_f0(min(c, 0.999)))  # only bracket ends beyond ASYMPTOTIC_C_MAX pass 0.999; unused
+
+
+def law_bound(c: float, gamma: float, order: int) -> float:
+    """Bound of |mu/mu_law - 1| at stick radius c for the law of this order (0: (2.28), 2: with f2)."""
+    if gamma > GAMMA_BREAKS[-1]:
+        return math.inf  # not measured
+    if c < F2_TABLE_C_MIN:
+        return K2_SMALL_C * gamma**2 if order == 0 else K4_SMALL_C * gamma**4 + F2_SMALL_C_ERROR * gamma**2
+    return envelope(K2_BOUNDS if order == 0 else K4_BOUNDS, gamma) * gamma ** (2 + order)
+
+
+def law_stick_radius(mu: float, gamma: float, order: int) -> float:
+    """c with mu = gamma f0(c) (order 0: the inverse of (2.28) in asymptotics.flat_punch) or
+    mu = gamma f0(c) (1 + R(c) gamma^2) (order 2: Brent in logit(c) below the order-0 c, the law
+    increasing in c); 0 where c underflows."""
+    c0 = float(first_order_stick_radius(mu, gamma=gamma))
+    if order == 0 or c0 == 0.0:
+        return c0
+    target = math.log(mu / gamma)
+
+    def h(s: float) -> float:
+        c = expit(s)
+        return math.log(float(mu_over_gamma(c)) * (1.0 + f2_ratio(c) * gamma**2)) - target
+
+    hi = logit(min(c0, 1.0 - 2.0**-52))
+    if h(hi) <= 0.0:  # c0 = 1 in doubles (mu/gamma > 12), or the law's root is within rounding of c0
+        return c0
+    lo, step = hi - 1.0, 1.0
+    while h(lo) > 0.0:
+        lo, step = lo - step, 2.0 * step
+        if lo < -740.0:  # c < 1e-321: underflows
+            return 0.0
+    return expit(optimize.brentq(h, lo, hi, xtol=1e-13, rtol=4.0 * np.finfo(float).eps))
+
+
+def law_compliance(c: float, gamma: float, order: int, f0: float) -> tuple[float, float]:
+    """P* = 1 + gamma^2 P2 (+ gamma^4 P4 for order 2 and c >= 1e-3) and the bound of its error (f0 = f0(c))."""
+    p2 = P2_OVER_F0_AT_ZERO * f0 if c < 1e-100 else float(compliance_p2(c))
+    if order == 2 and c >= F2_TABLE_C_MIN:
+        return 1.0 + gamma**2 * p2 + gamma**4 * float(compliance_p4(c)), KP4_BOUND * gamma**6 * f0
+    return 1.0 + gamma**2 * p2, KP2_BOUND * gamma**4 * f0
+
+
+LAW_NAMES = {0: "first order (2.28)", 2: "second order (2.28) + gamma^2 f2"}
+
+
+@dataclass(frozen=True, slots=True)
+class FirstOrderField:
+    """Stresses at first order in gamma: p = p^(0) (2.26), q = mu p^(0) (1 - psi) (2.31) on the stick
+    zone and mu p^(0) on the slip annulus; relative error O(gamma^2) (measured max |q/(mu p) - (1 - psi)|
+    = 0.06 ... 0.5 gamma^2 for c = 0.1 ... 0.9, derivations/section_2_3.md)."""
+
+    c: float
+    mu: float
+
+    def pressure(self, x: np.ndarray) -> np.ndarray:
+        return np.asarray(frictionless_pressure(x), dtype=float)  # (2.26)
+
+    def shear(self, x: np.ndarray) -> np.ndarray:
+        p = np.asarray(frictionless_pressure(x), dtype=float)
+        if self.c == 0.0:  # c underflowed: slip everywhere
+            return self.mu * p
+        return self.mu * p * np.asarray(shear_ratio_first_order(x, self.c), dtype=float)  # (2.31)
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        raise NotImplementedError(
+            "the slip displacement (2.10) is not computed on the asymptotic route; use the solver "
+            "(give level=, or an rtol below this route's error bound; the solver needs c >= 1e-5)")
+
+
+def route_text(order: int, bound: float, bound_p: float, why: str) -> str:
+    return (f"asymptotic, {LAW_NAMES[order]}: relative error of mu <= {bound:.2g} (measured bound, c <= "
+            f"{ASYMPTOTIC_C_MAX}), of P* <= {bound_p:.2g}; stresses at first order (2.26), (2.31), relative error "
+            f"O(gamma^2); no slip ({why})")
+
+
+@dataclass(frozen=True, slots=True)
+class Bracket:
+    """The law's stick radius for given mu and the range the true one lies in (mu/mu_law within the bound)."""
+
+    c: float
+    lo: float
+    hi: float
+    bound: float
+
+
+def law_bracket(mu: float, gamma: float, order: int) -> Bracket:
+    c = law_stick_radius(mu, gamma, order)
+    # the true c solves mu_law(c) (1 + e) = mu with |e| <= bound, and mu_law increases with c;
+    # the bound is the small-c one only if the whole range lies below 1e-3
+    for at in (c, 1.0):
+        bound = law_bound(at, gamma, order)
+        lo = law_stick_radius(mu / (1.0 + bound), gamma, order)
+        hi = law_stick_radius(mu / (1.0 - bound), gamma, order) if bound < 1.0 else 1.0
+        if hi < F2_TABLE_C_MIN or at == 1.0:
+            return Bracket(c, lo, hi, bound)
+    raise AssertionError  # pragma: no cover

@@ -238,8 +238,8 @@ LEVEL_C_MIN = {1: 5e-6, 2: 5e-5, 3: 5e-4, 4: 1e-2}
 C_ASYMPTOTIC = 1e-5
 #: Typical relative accuracy of each level (numeric.discretize.LEVELS); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {1: 1e-8, 2: 1e-10, 3: 1e-12}
-#: Relative error of mu from the Chebyshev table (numeric.eigen_table): MU_RELATIVE_ERROR = 6.8e-12 at
-#: its build checks, but 5.2e-11 was measured at the corner c = 0.95, gamma = 2/3; twice that.
+#: Relative error of mu from the Chebyshev table (numeric.eigen_table): MU_RELATIVE_ERROR = 5.2e-11, the
+#: worst of its build checks (at the corner c = 0.95, gamma = 2/3); about twice that.
 TABLE_MU_RTOL = 1e-10
 
 def _graded_breakpoints(c: float) -> np.ndarray:

@@ -84,7 +84,7 @@ def _summary(entries: tuple[Derivation, ...]) -> str:
     rows = ["| result | what | agrees with the paper | identities checked numerically | fast vs precise |",
             "|---|---|---|---|---|"]
     for d in entries:
-        agree = "yes" if d.agrees else ("no, see note" if d.printed is not None else "(not in the paper)")
+        agree = "(not in the paper)" if d.printed is None else ("yes" if d.agrees else "no, see note")
         ids = ", ".join(f"{i.name} ({_sig(identity_residual(i))})" for i in d.identities) or "none"
         cmp_ = _sig(fast_precise_difference(d)) if d.comparison else "-"
         rows.append(f"| {d.label} | {d.title} | {agree} | {ids} | {cmp_} |")

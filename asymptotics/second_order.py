@@ -235,10 +235,6 @@ def _table():
     return data
 
 
-def _logit(c: np.ndarray) -> np.ndarray:
-    return np.log(c / (1.0 - c))
-
-
 def _from_table(cs: np.ndarray, name: str, fallback) -> np.ndarray:
     """Evaluate the piecewise Chebyshev table ``name`` at cs; the quadrature outside it."""
     data = _table()
@@ -249,7 +245,7 @@ def _from_table(cs: np.ndarray, name: str, fallback) -> np.ndarray:
         sel = inside & (flat >= lo) & (flat <= hi)
         if np.any(sel):
             a, b = math.log(lo / (1 - lo)), math.log(hi / (1 - hi))
-            out[sel] = chebyshev.chebval(2.0 * (_logit(flat[sel]) - a) / (b - a) - 1.0, coef)
+            out[sel] = chebyshev.chebval(2.0 * (special.logit(flat[sel]) - a) / (b - a) - 1.0, coef)
     for i in np.flatnonzero(~inside):
         out[i] = fallback(float(flat[i]))
     return out.reshape(cs.shape)

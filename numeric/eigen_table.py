@@ -50,7 +50,7 @@ def table_available() -> bool:
 
 def _xi(c: np.ndarray, c_min: float, c_max: float) -> np.ndarray:
     s_lo, s_hi = math.log(c_min / (1 - c_min)), math.log(c_max / (1 - c_max))
-    return 2.0 * (np.log(c / (1.0 - c)) - s_lo) / (s_hi - s_lo) - 1.0
+    return 2.0 * (special.logit(c) - s_lo) / (s_hi - s_lo) - 1.0
 
 
 def _evaluate(c, gamma, coef_mu, coef_p, c_min, c_max, gamma_max) -> tuple[np.ndarray, np.ndarray]:
@@ -136,7 +136,7 @@ def table_stick_radius(mu: np.ndarray, gamma: np.ndarray) -> np.ndarray:
 
 def _c_of_xi(xi: np.ndarray, c_min: float, c_max: float) -> np.ndarray:
     s_lo, s_hi = math.log(c_min / (1 - c_min)), math.log(c_max / (1 - c_max))
-    return 1.0 / (1.0 + np.exp(-(s_lo + (s_hi - s_lo) * (xi + 1.0) / 2.0)))
+    return special.expit(s_lo + (s_hi - s_lo) * (xi + 1.0) / 2.0)
 
 
 def _clenshaw(series: np.ndarray, xi: np.ndarray) -> np.ndarray:

@@ -246,8 +246,7 @@ def _samples(lo: float, hi: float, breakpoints: ArrayLike = (), n: int = 300, fi
 
 
 def _logit_grid(c_lo: float, c_hi: float, n: int) -> np.ndarray:
-    s = np.linspace(math.log(c_lo / (1 - c_lo)), math.log(c_hi / (1 - c_hi)), n)
-    return 1.0 / (1.0 + np.exp(-s))
+    return special.expit(np.linspace(special.logit(c_lo), special.logit(c_hi), n))
 
 
 # ---------------------------------------------------------------------------------------

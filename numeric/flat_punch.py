@@ -47,6 +47,7 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import ArrayLike
 from scipy import optimize
+from scipy.special import expit, logit
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.arrays import scalar_or_array
@@ -286,17 +287,6 @@ def _meets(sol: FlatPunchSolution, rtol: float, value: float) -> bool:
 # The solver route
 
 
-def _logit(c: float) -> float:
-    return math.log(c / (1.0 - c))
-
-
-def _expit(s: float) -> float:
-    if s < 0.0:  # no overflow of exp(-s) for very small c
-        e = math.exp(s)
-        return e / (1.0 + e)
-    return 1.0 / (1.0 + math.exp(-s))
-
-
 class _AboveTop(Exception):
     """mu exceeds mu_c at the search's largest stick radius."""
 
@@ -306,10 +296,10 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float, top_c: f
 
     Returns the solution and d(log mu)/ds at the root (from the two nearest evaluations)."""
     evaluations: dict[float, FlatField] = {}
-    top = _logit(top_c)
+    top = logit(top_c)
 
     def g(s: float) -> float:
-        c = min(_expit(s), top_c)
+        c = min(expit(s), top_c)
         try:
             field = solve_mu(c, gamma, LEVELS[level], mu_guess=mu)
         except NoEigenvalueError:
@@ -318,7 +308,7 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float, top_c: f
         return math.log(field.mu) - math.log(mu)
 
     step = 0.05
-    s0 = min(_logit(c_guess), top - step)
+    s0 = min(logit(c_guess), top - step)
     lo, hi = s0 - step, s0 + step
     g_lo, g_hi = g(lo), g(hi)
     while g_lo > 0.0:
@@ -334,10 +324,10 @@ def _invert_coarse(mu: float, gamma: float, level: int, c_guess: float, top_c: f
         step *= 2
         g_hi = g(hi)
     root = optimize.brentq(g, lo, hi, xtol=1e-11)
-    field = evaluations.get(root) or solve_mu(_expit(root), gamma, LEVELS[level], mu_guess=mu)
+    field = evaluations.get(root) or solve_mu(expit(root), gamma, LEVELS[level], mu_guess=mu)
     # slope from the nearest evaluation at a different c (s beyond top_c is clamped to it)
     near = min((s for s in evaluations if evaluations[s].c != field.c), key=lambda s: abs(s - root))
-    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (_logit(evaluations[near].c) - _logit(field.c))
+    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (logit(evaluations[near].c) - logit(field.c))
     return field, slope
 
 
@@ -348,8 +338,8 @@ def _table_start(mu: float, gamma: float) -> tuple[float, float] | None:
     c = float(table_stick_radius(mu, gamma))
     if math.isnan(c):
         return None
-    s = _logit(c)
-    pair = table_friction_coefficient(1.0 / (1.0 + np.exp(-np.array([s - 1e-4, s + 1e-4]))), np.array(gamma))
+    s = logit(c)
+    pair = table_friction_coefficient(expit(np.array([s - 1e-4, s + 1e-4])), np.array(gamma))
     if np.any(np.isnan(pair)):
         return None
     return c, float(np.log(pair[1] / pair[0]) / 2e-4)
@@ -375,7 +365,7 @@ def _invert(mu: float, gamma: float, level: int, c_guess: float) -> tuple[FlatFi
         c_start = coarse.c
     else:
         c_start, slope = start
-    s_old, field = _logit(c_start), solve_mu(c_start, gamma, LEVELS[level], mu_guess=mu)
+    s_old, field = logit(c_start), solve_mu(c_start, gamma, LEVELS[level], mu_guess=mu)
     g_old = math.log(field.mu) - math.log(mu)
     best, g_best = field, g_old
     for _ in range(8):
@@ -385,11 +375,11 @@ def _invert(mu: float, gamma: float, level: int, c_guess: float) -> tuple[FlatFi
         while True:
             s_new = s_old + step
             try:
-                if _expit(s_new) > top_c:
+                if expit(s_new) > top_c:
                     if solve_mu(top_c, gamma, LEVELS[level], mu_guess=mu).mu < mu:
                         raise _AboveTop()  # mu increases with c: the stick radius is above top_c
                     raise NoEigenvalueError("step beyond the search's largest stick radius")
-                new = solve_mu(_expit(s_new), gamma, LEVELS[level], mu_guess=mu)
+                new = solve_mu(expit(s_new), gamma, LEVELS[level], mu_guess=mu)
                 break
             except NoEigenvalueError:
                 step /= 4.0  # overshot beyond the largest stick radius: shorten the step

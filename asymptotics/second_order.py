@@ -36,7 +36,7 @@ the quadratures ``f2_quadrature``, ``compliance_p2_quadrature``, ``compliance_p4
 
 Accuracy (measured): the quadrature f2 agrees with an mpmath (tanh-sinh, 20 digits)
 evaluation of the same double integral to 1.4e-14 (c = 0.5) and 4e-15 (c = 0.9) relative; the tables
-reproduce the quadratures to the worst errors stored in ``asymptotics._second_order_table``
+reproduce the quadratures to the worst errors stored in ``asymptotics.second_order_data``
 (``F2_RELATIVE_ERROR`` etc.). Against the full solver (``numeric.flat_punch``, level 3) at
 gamma = 0.02 ... 0.16, c = 0.1 ... 0.9, (mu/gamma - f0)/gamma^2 - f2 and
 (P* - 1 - gamma^2 P2)/gamma^4 - P4 decrease like gamma^2 (see tests/test_second_order.py):
@@ -60,8 +60,8 @@ from numpy.typing import ArrayLike
 from scipy import integrate, special
 
 from .arrays import scalar_or_array
-from .flat_punch import mu_over_gamma
-from .materials import check_c, check_gamma
+from .first_order import mu_over_gamma, stick_radius_first_order
+from .materials import check_c, check_gamma, resolve_gamma
 
 __all__ = [
     "C_MIN",
@@ -72,6 +72,8 @@ __all__ = [
     "F2_SMALL_C_ERROR",
     "f2_quadrature",
     "mu_over_gamma_second_order",
+    "stick_radius_second_order",
+    "table_data",
     "compliance_p2",
     "compliance_p4",
     "compliance_p2_quadrature",
@@ -229,15 +231,17 @@ def compliance_p4_quadrature(c: float, *, f2_value: float | None = None) -> floa
 
 
 @lru_cache(maxsize=1)
-def _table():
-    from . import _second_order_table as data  # generated; imported on first use only
+def table_data():
+    """The generated module ``asymptotics.second_order_data`` (imported on first use, then kept;
+    ``table_data.cache_clear()`` after rewriting it, as ``derivations/build_second_order.py`` does)."""
+    from . import second_order_data  # generated; imported on first use only
 
-    return data
+    return second_order_data
 
 
 def _from_table(cs: np.ndarray, name: str, fallback) -> np.ndarray:
     """Evaluate the piecewise Chebyshev table ``name`` at cs; the quadrature outside it."""
-    data = _table()
+    data = table_data()
     flat = cs.ravel()
     out = np.empty(flat.shape)
     inside = (flat >= C_MIN) & (flat <= C_MAX)
@@ -327,6 +331,53 @@ def mu_over_gamma_second_order(c: ArrayLike, gamma: ArrayLike) -> np.ndarray | f
     cs = _check_open_c(c)
     gs = check_gamma(gamma)
     return scalar_or_array(mu_over_gamma(cs) + gs**2 * f2(cs))
+
+
+def stick_radius_second_order(mu: ArrayLike, nu: float | None = None, *,
+                              gamma: float | None = None) -> np.ndarray | float:
+    """Stick radius c for friction mu by the second-order law mu/gamma = f0(c) + gamma^2 f2(c).
+
+    The inverse of ``mu_over_gamma_second_order`` (beyond [S75] (2.28)), by the secant method in
+    u = log(atanh c) from the first-order c (``asymptotics.first_order.stick_radius_first_order``).
+    Give exactly one of ``nu`` and ``gamma``; c(0) = 0, c(inf) = 1 as at first order.
+
+    Examples
+    --------
+    >>> round(float(stick_radius_second_order(0.18104, nu=0.25)), 4)
+    0.5042
+    """
+    g = resolve_gamma(nu, gamma)
+    c0 = np.asarray(stick_radius_first_order(mu, gamma=g), dtype=float)
+    try:
+        f2(0.5)  # its generated table is imported on first use
+    except ImportError as exc:
+        raise NotImplementedError(
+            f"stick_radius_second_order needs asymptotics.second_order.f2, which is not available yet ({exc})"
+        ) from None
+    inner = (c0 > 0.0) & (c0 < 1.0)
+    out = c0.copy()
+    if not np.any(inner):
+        return scalar_or_array(out)
+    target = np.broadcast_to(np.asarray(mu, dtype=float), c0.shape)[inner] / g
+
+    def residual(u: np.ndarray) -> np.ndarray:
+        c = np.tanh(np.exp(u))
+        return np.asarray(mu_over_gamma(c)) + g**2 * np.asarray(f2(c)) - target
+
+    u0 = np.log(np.arctanh(c0[inner]))
+    u1 = u0 - 1e-3
+    r0, r1 = residual(u0), residual(u1)
+    for _ in range(60):
+        denom = np.where(r1 != r0, r1 - r0, 1.0)
+        u2 = np.where(r1 != r0, u1 - r1 * (u1 - u0) / denom, u1)
+        u0, r0 = u1, r1
+        u1, r1 = u2, residual(u2)
+        if np.all(np.abs(u1 - u0) < 1e-14):
+            break
+    else:
+        raise ValueError("no stick radius solves mu/gamma = f0(c) + gamma^2 f2(c) for some mu (secant did not converge)")
+    out[inner] = np.tanh(np.exp(u1))
+    return scalar_or_array(out)
 
 
 def compliance_p2(c: ArrayLike) -> np.ndarray | float:

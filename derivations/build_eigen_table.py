@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from numeric.discretize import LEVELS
 from numeric.eigen import solve_mu
 from numeric.eigen_table import _evaluate

@@ -5,7 +5,7 @@ Computes ``asymptotics.second_order.f2_quadrature`` (f2/f0 is tabulated),
 first kind in logit(c) on each piece of ``PIECES`` (1e-3 ... 0.1 ... 0.9 ... 0.999),
 turns them into Chebyshev coefficients, and checks the interpolants at points that are not
 grid points (fixed seed) against fresh quadratures. Writes the generated module
-``asymptotics/_second_order_table.py`` with the coefficients and the measured worst errors.
+``asymptotics/second_order_data.py`` with the coefficients and the measured worst errors.
 
 Run time: about 15 minutes on 2 cores (P4 takes ~5-20 s a point).
 
@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from asymptotics.second_order import PIECES, compliance_p2_quadrature, compliance_p4_quadrature, f2_quadrature
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -71,9 +71,9 @@ def main() -> None:
     import asymptotics.second_order as so
 
     text = _render(coefs, 0.0, 0.0, 0.0)
-    out = ROOT / "asymptotics" / "_second_order_table.py"
+    out = ROOT / "asymptotics" / "second_order_data.py"
     out.write_text(text, encoding="utf-8")
-    so._table.cache_clear()
+    so.table_data.cache_clear()
     cs = np.concatenate(checks)
     err_f2 = float(np.max(np.abs(so.f2(cs) / (fresh[:, 0] * mu_over_gamma(cs)) - 1.0)))
     err_p2 = float(np.max(np.abs(so.compliance_p2(cs) - fresh[:, 1])))

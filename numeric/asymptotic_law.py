@@ -21,8 +21,8 @@ import numpy as np
 from scipy import optimize
 from scipy.special import expit, logit
 
-from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma, shear_ratio_first_order
-from asymptotics.flat_punch import stick_radius as first_order_stick_radius
+from asymptotics.first_order import frictionless_pressure, mu_over_gamma, shear_ratio_first_order
+from asymptotics.first_order import stick_radius_first_order
 from asymptotics.second_order import C_MIN as F2_TABLE_C_MIN
 from asymptotics.second_order import F2_SMALL_C_ERROR, F2_SMALL_C_FIT, compliance_p2, compliance_p4, f2_over_f0
 
@@ -80,10 +80,10 @@ def law_bound(c: float, gamma: float, order: int) -> float:
 
 
 def law_stick_radius(mu: float, gamma: float, order: int) -> float:
-    """c with mu = gamma f0(c) (order 0: the inverse of (2.28) in asymptotics.flat_punch) or
+    """c with mu = gamma f0(c) (order 0: the inverse of (2.28) in asymptotics.first_order) or
     mu = gamma f0(c) (1 + R(c) gamma^2) (order 2: Brent in logit(c) below the order-0 c, the law
     increasing in c); 0 where c underflows."""
-    c0 = float(first_order_stick_radius(mu, gamma=gamma))
+    c0 = float(stick_radius_first_order(mu, gamma=gamma))
     if order == 0 or c0 == 0.0:
         return c0
     target = math.log(mu / gamma)

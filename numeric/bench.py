@@ -14,7 +14,7 @@ adhesive case c = 1 for each nu, every method at every resolution it offers:
   flat solution (what ``power_law(2, ...).A`` computes);
 * the Chebyshev table route (``friction_coefficient``, ``stick_radius``,
   ``numeric.eigen_table.table_compliance``);
-* the asymptotic formulas of ``asymptotics.flat_punch``: (2.28) and its inverse, the
+* the asymptotic formulas of ``asymptotics.first_order``: (2.28) and its inverse, the
   first-order compliance (2.34), the first-order central pressure (2.32)-(2.33), (2.36) at
   c = 1, and the second-order law of ``asymptotics.second_order`` where that module exists.
 
@@ -60,7 +60,7 @@ from pathlib import Path
 
 import numpy as np
 
-from asymptotics import flat_punch as asymptotic_flat_punch
+from asymptotics import first_order
 from asymptotics.adhesive import central_pressure_adhesive, compliance_adhesive, sphere_A_adhesive
 from asymptotics.materials import gamma_from_nu
 
@@ -442,13 +442,13 @@ def _second_order():
 def _measure_asymptotic(case: Case, ref: Reference, config: Config) -> list[Row]:
     g = case.gamma
     if case.adhesive:
-        p, t = _timed(lambda: float(asymptotic_flat_punch.compliance_first_order(1.0, g)), config)  # (2.36)
+        p, t = _timed(lambda: float(first_order.compliance_first_order(1.0, g)), config)  # (2.36)
         return _rows(case, ref, ASYMPTOTIC, "(2.36)", 0, 1, {"P*": (p, t)})
     values = {
-        "mu": _timed(lambda: g * float(asymptotic_flat_punch.mu_over_gamma(case.c)), config),  # (2.28)
-        "c": _timed(lambda: float(asymptotic_flat_punch.stick_radius(ref.mu, gamma=g)), config),  # (2.28) inverted
-        "P*": _timed(lambda: float(asymptotic_flat_punch.compliance_first_order(case.c, g)), config),  # (2.34)
-        "p(0)": _timed(lambda: 2.0 / math.pi + g * g * float(asymptotic_flat_punch.pressure_correction(0.0, case.c)),
+        "mu": _timed(lambda: g * float(first_order.mu_over_gamma(case.c)), config),  # (2.28)
+        "c": _timed(lambda: float(first_order.stick_radius_first_order(ref.mu, gamma=g)), config),  # (2.28) inverted
+        "P*": _timed(lambda: float(first_order.compliance_first_order(case.c, g)), config),  # (2.34)
+        "p(0)": _timed(lambda: 2.0 / math.pi + g * g * float(first_order.pressure_correction(0.0, case.c)),
                        config),  # (2.32)-(2.33)
     }
     rows = _rows(case, ref, ASYMPTOTIC, "first order", 0, 1, values)
@@ -456,7 +456,7 @@ def _measure_asymptotic(case: Case, ref: Reference, config: Config) -> list[Row]
     if second is not None:
         values = {
             "mu": _timed(lambda: g * float(second.mu_over_gamma_second_order(case.c, g)), config),
-            "c": _timed(lambda: float(asymptotic_flat_punch.stick_radius(ref.mu, gamma=g, order=2)), config),
+            "c": _timed(lambda: float(second.stick_radius_second_order(ref.mu, gamma=g)), config),
         }
         rows += _rows(case, ref, ASYMPTOTIC, "second order", 0, 2, values)
     return rows

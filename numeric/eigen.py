@@ -34,7 +34,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from asymptotics.arrays import read_only
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 
 from .discretize import (
     Discretisation,

@@ -27,7 +27,7 @@ import numpy as np
 from numpy.polynomial import chebyshev
 from scipy import special
 
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 
 __all__ = ["table_available", "in_domain", "table_friction_coefficient", "table_compliance", "table_stick_radius"]
 

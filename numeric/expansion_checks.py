@@ -1,6 +1,6 @@
 """The asymptotic expansions of [S75] §2.3 checked against the full solution, with observed orders.
 
-Each check compares a closed form of ``asymptotics.flat_punch`` (or
+Each check compares a closed form of ``asymptotics.first_order`` (or
 ``asymptotics.second_order``, ``asymptotics.adhesive``) with the full solution of
 ``numeric.flat_punch`` over Poisson's ratios from nu = 0.49 (gamma = 0.0196) to nu = -1/2
 (gamma = 2/3), and fits the order in gamma from log-log slopes between neighbouring gammas
@@ -43,7 +43,7 @@ import numpy as np
 
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.arrays import read_only
-from asymptotics.flat_punch import (
+from asymptotics.first_order import (
     c_large_mu,
     c_small_mu,
     compliance_first_order,

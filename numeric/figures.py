@@ -47,7 +47,7 @@ from scipy import optimize, special
 
 from asymptotics.adhesive import compliance_adhesive, sphere_A_adhesive
 from asymptotics.arrays import read_only, scalar_or_array
-from asymptotics.flat_punch import mu_over_gamma, shear_ratio_first_order
+from asymptotics.first_order import mu_over_gamma, shear_ratio_first_order
 from asymptotics.materials import check_c, check_nu, gamma_from_nu
 
 from .eigen import NoEigenvalueError

@@ -51,7 +51,7 @@ from scipy.special import expit, logit
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.arrays import scalar_or_array
-from asymptotics.flat_punch import frictionless_pressure, mu_over_gamma
+from asymptotics.first_order import frictionless_pressure, mu_over_gamma
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, kappa_from_gamma, resolve_gamma
 
 from .asymptotic_law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,

@@ -424,7 +424,7 @@ def power_law_pressure(flat: FlatStresses, n: float, x: ArrayLike) -> np.ndarray
 
     Examples
     --------
-    >>> from asymptotics.flat_punch import frictionless_pressure
+    >>> from asymptotics.first_order import frictionless_pressure
     >>> class Smooth:
     ...     gamma, mu, c, compliance = 0.5, 0.0, 0.0, 1.0
     ...     breakpoints = np.concatenate([[0.0, 0.5], 1 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])

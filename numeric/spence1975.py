@@ -51,7 +51,7 @@ from functools import lru_cache
 import numpy as np
 
 from asymptotics.arrays import read_only
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import check_c, resolve_gamma
 
 from .abel import lower_abel_weights, upper_abel_weights

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from asymptotics.second_order import f2_quadrature as _f2_quadrature
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from numeric import flat_punch
 from numeric.expansion_checks import (
     NUS,

@@ -15,7 +15,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_from_nu
 from numeric import figures, flat_punch, friction_coefficient
 from numeric.power_law import indentation_constant_316
@@ -150,7 +150,7 @@ def test_fig5_flat_punch_stresses():
     # (gamma = 1/2: the first-order error is O(gamma^2); measured worst 0.036 at c = 0.5)
     (first,) = data.select("q/(mu p)(x)", "(2.31)")
     assert np.array_equal(first.x, ratio.x)
-    from asymptotics.flat_punch import shear_ratio_first_order_mp
+    from asymptotics.first_order import shear_ratio_first_order_mp
 
     for k in (50, 150):
         assert abs(first.y[k] - float(shear_ratio_first_order_mp(first.x[k], c))) < 1e-12

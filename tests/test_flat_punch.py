@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from asymptotics.adhesive import pressure_adhesive_mp, shear_adhesive_mp
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_dissimilar
 from numeric import NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
 from numeric.discretize import LEVELS

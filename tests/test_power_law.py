@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from asymptotics import adhesive
-from asymptotics.flat_punch import frictionless_pressure
+from asymptotics.first_order import frictionless_pressure
 import importlib
 
 pl = importlib.import_module("numeric.power_law")  # the module; numeric.power_law is the function

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy import optimize
 
-from asymptotics.flat_punch import compliance_first_order, frictionless_pressure, mu_over_gamma, shear_ratio_first_order
+from asymptotics.first_order import compliance_first_order, frictionless_pressure, mu_over_gamma, shear_ratio_first_order
 from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
 from numeric import NoEigenvalueError, power_law
@@ -222,7 +222,7 @@ def test_bug1_2_tiny_mu_returns_the_asymptotic_law_fast(nu, mu):
         r = R_SMALL_C[0] - R_SMALL_C[1] / math.log(4 / s.c) if s.c > 0 else R_SMALL_C[0]
         assert s.c == pytest.approx(4 * math.exp(-g * (1 + r * g**2) / mu), rel=1e-10, abs=1e-320)
     # P* - 1 = gamma^2 P2(c) with P2 -> rho f0 as c -> 0, rho from (2.34) as implemented independently
-    # (asymptotics.flat_punch.compliance_first_order, tanh-sinh) at c = 1e-300, and f0 = mu/(gamma (1 + R gamma^2))
+    # (asymptotics.first_order.compliance_first_order, tanh-sinh) at c = 1e-300, and f0 = mu/(gamma (1 + R gamma^2))
     c_rho = max(s.c, 1e-300)
     rho = (compliance_first_order(c_rho, 0.5) - 1.0) / (0.25 * float(mu_over_gamma(c_rho)))  # (2.34) ~ gamma^2
     r = R_SMALL_C[0] - R_SMALL_C[1] / math.log(4 / c_rho)

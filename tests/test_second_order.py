@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 import numeric
-from asymptotics import _second_order_table as table
+from asymptotics import second_order_data as table
 from asymptotics import second_order as so
-from asymptotics.flat_punch import mu_over_gamma
+from asymptotics.first_order import mu_over_gamma
 
 ROOT = Path(__file__).resolve().parents[1]
 CS = (0.1, 0.3, 0.5, 0.7, 0.9)
@@ -154,6 +154,6 @@ def test_fast_p4_against_the_quadrature(c):
 @pytest.mark.slow
 def test_table_regenerates_identically():
     # deterministic build (fixed nodes, fixed seed, deterministic quadratures); ~15 minutes
-    committed = (ROOT / "asymptotics" / "_second_order_table.py").read_text(encoding="utf-8")
+    committed = (ROOT / "asymptotics" / "second_order_data.py").read_text(encoding="utf-8")
     subprocess.run([sys.executable, str(ROOT / "derivations" / "build_second_order.py")], check=True)
-    assert (ROOT / "asymptotics" / "_second_order_table.py").read_text(encoding="utf-8") == committed
+    assert (ROOT / "asymptotics" / "second_order_data.py").read_text(encoding="utf-8") == committed

@@ -12,7 +12,7 @@ p(x) = n x^(n-1) int_x^1 t^(-n) p0(t) dt. Hence P* = n P0*/(n+1) (3.17) and
 p(0) = n p0(0)/(n-1) for n > 1 (3.18).
 
 Without friction p0 = (2/pi)(1 - t^2)^(-1/2) (2.26) and (3.13) has the closed form
-(derived in ``asymptotics.derive.power_law``, entry "frictionless-n")
+(derived in ``asymptotics.derive.similarity``, entry "frictionless-n")
 
     p(x) = (2n/pi) sqrt(1 - x^2) 2F1(1, 1 - n/2; 3/2; 1 - x^2),
 
@@ -129,7 +129,7 @@ def central_pressure_ratio(n: float) -> float:
 # there each n gets a form in x^2 instead (module docstring of the derivation, entry
 # "frictionless-n"). The x^2-form has poles at odd n >= 3 that cancel between its terms;
 # within _ODD_GAP of them the z-form is used, whose error there is 2e-15
-# (tests/test_derive_power_law.py checks both against mpmath).
+# (tests/test_derive_similarity.py checks both against mpmath).
 _ODD_GAP = 0.05
 
 

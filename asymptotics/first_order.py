@@ -13,7 +13,7 @@ Functions (numpy, vectorised; the ``*_mp`` twins evaluate the same result in mpm
 
     frictionless_pressure      p^(0)(x)                                        (2.26)
     mu_over_gamma              f0(c)                                           (2.28)
-    stick_radius               c for given mu, gamma: the inverse of (2.28)
+    stick_radius_first_order   c for given mu, gamma: the inverse of (2.28)
     c_small_mu, c_large_mu     its limits (2.29) with correction terms
     psi, shear_ratio_first_order   psi(x, c) and q^(0)/(mu p^(0)) = 1 - psi   (2.30), (2.31)
     pressure_correction        P1 with p = p^(0) + gamma^2 P1 + ..., from (2.33)
@@ -21,7 +21,7 @@ Functions (numpy, vectorised; the ``*_mp`` twins evaluate the same result in mpm
 
 Elliptic integrals use SciPy's and mpmath's parameter m = k^2: K'(c) = ``ellipkm1(c**2)``,
 exact for tiny c. The SymPy derivations of these results are in
-``asymptotics.derive.flat_punch`` (registry entries "(2.26)" ... "(2.36)").
+``asymptotics.derive.first_order`` (registry entries "(2.26)" ... "(2.36)").
 
 References
 ----------
@@ -45,10 +45,11 @@ __all__ = [
     "frictionless_pressure",
     "mu_over_gamma",
     "mu_over_gamma_mp",
-    "stick_radius",
-    "stick_radius_mp",
+    "stick_radius_first_order",
+    "stick_radius_first_order_mp",
     "c_small_mu",
     "c_large_mu",
+    "one_minus_c_large_mu",
     "SMALL_MU_COEFFICIENTS",
     "LARGE_MU_COEFFICIENTS",
     "psi",
@@ -59,6 +60,8 @@ __all__ = [
     "pressure_correction_mp",
     "compliance_first_order",
     "compliance_first_order_mp",
+    "shear_moment_first_order",
+    "tanh_sinh_rule",
 ]
 
 
@@ -140,7 +143,7 @@ def _k_minus_e_over_m(m: np.ndarray, k_of_m: np.ndarray) -> np.ndarray:
 # (2.29): the limits of the inverse of (2.28), with the next terms
 
 #: c = 4 exp(-E) (1 + sum_j a_j(E) z^j), E = gamma/mu, z = exp(-2E); a_j as polynomial
-#: coefficients in E (lowest first). Derived in asymptotics.derive.flat_punch "(2.29)".
+#: coefficients in E (lowest first). Derived in asymptotics.derive.first_order "(2.29)".
 SMALL_MU_COEFFICIENTS: tuple[tuple[float, ...], ...] = (
     (-4.0, -4.0 / 3.0),
     (14.0, 84.0 / 5.0, 40.0 / 9.0),
@@ -148,7 +151,7 @@ SMALL_MU_COEFFICIENTS: tuple[tuple[float, ...], ...] = (
 )
 
 #: 1 - c = 2 w (1 + sum_j b_j(M) w^j), M = mu/gamma, w = exp(-pi M); b_j as polynomial
-#: coefficients in pi M (lowest first). Derived in asymptotics.derive.flat_punch "(2.29)".
+#: coefficients in pi M (lowest first). Derived in asymptotics.derive.first_order "(2.29)".
 LARGE_MU_COEFFICIENTS: tuple[tuple[float, ...], ...] = (
     (-1.0, 1.0),
     (1.0, -9.0 / 4.0, 3.0 / 2.0),
@@ -180,8 +183,9 @@ def _small_mu_series(e: np.ndarray, terms: int) -> np.ndarray:
     return np.where(finite, np.exp(np.log(4.0) - ef) * factor, 0.0)  # (2.29)
 
 
-def _large_mu_complement(ratio: np.ndarray, terms: int) -> np.ndarray:
-    """1 - c from M = mu/gamma by the large-mu expansion; 0 where M is infinite."""
+def one_minus_c_large_mu(ratio: np.ndarray, terms: int) -> np.ndarray:
+    """1 - c from M = mu/gamma (an array) by the large-mu expansion (2.29) with ``terms`` terms; 0 where M
+    is infinite. The complement itself, free of the rounding of c = 1 - (1 - c) (``c_large_mu``)."""
     finite = np.isfinite(ratio)
     pm = np.pi * np.where(finite, ratio, 1.0)
     w = np.exp(-pm)
@@ -202,7 +206,7 @@ def c_small_mu(mu: ArrayLike, gamma: float, terms: int = 3) -> np.ndarray | floa
 
     ``terms`` = 1 is the paper's leading term, each further term adds one power of z.
     Relative error against the exact inverse of (2.28): O(E^terms z^terms)
-    (tests/test_derive_flat_punch.py measures it).
+    (tests/test_derive_first_order.py measures it).
 
     Examples
     --------
@@ -236,7 +240,7 @@ def c_large_mu(mu: ArrayLike, gamma: float, terms: int = 3) -> np.ndarray | floa
     True
     """
     ratio = _ratio(mu, gamma)
-    return scalar_or_array(1.0 - _large_mu_complement(ratio, _check_terms(terms)))
+    return scalar_or_array(1.0 - one_minus_c_large_mu(ratio, _check_terms(terms)))
 
 
 def _log_f0_and_slope(u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -267,12 +271,12 @@ def _stick_radius_order0(ratio: np.ndarray) -> np.ndarray:
     large = ratio > 12.0
     with np.errstate(divide="ignore"):
         c[small] = _small_mu_series(np.where(ratio[small] == 0.0, np.inf, 1.0 / np.maximum(ratio[small], 1e-300)), 4)
-    c[large] = 1.0 - _large_mu_complement(ratio[large], 4)
+    c[large] = 1.0 - one_minus_c_large_mu(ratio[large], 4)
     mid = ~(small | large)
     if np.any(mid):
         r = ratio[mid]
         guess_small = _small_mu_series(1.0 / r, 4)
-        guess_large = 1.0 - _large_mu_complement(r, 4)
+        guess_large = 1.0 - one_minus_c_large_mu(r, 4)
         # theta from the better asymptote; atanh(c) of the large-mu guess via the complement
         theta_small = np.arctanh(np.clip(guess_small, 1e-300, 0.5))  # used where r < 1/2 only
         eta = np.maximum(1.0 - guess_large, 1e-300)
@@ -286,17 +290,18 @@ def _stick_radius_order0(ratio: np.ndarray) -> np.ndarray:
             if np.all(np.abs(step) <= 1e-14 * np.maximum(1.0, np.abs(u))):
                 break
         else:  # pragma: no cover - the iteration is monotone and quadratic
-            raise RuntimeError("stick_radius: Newton iteration did not converge")
+            raise RuntimeError("stick_radius_first_order: Newton iteration did not converge")
         c[mid] = np.tanh(np.exp(u))
     return c
 
 
-def stick_radius(mu: ArrayLike, nu: float | None = None, *, gamma: float | None = None, order: int = 0) -> np.ndarray | float:
+def stick_radius_first_order(mu: ArrayLike, nu: float | None = None, *, gamma: float | None = None) -> np.ndarray | float:
     """Stick radius c for friction mu: the inverse of the first-order law (2.28), [S75].
 
-    Solves mu/gamma = f0(c) = atanh(c)/(c K'(c)) for c (``order=0``), the gamma -> 0 limit
-    at fixed mu/gamma; ``order=2`` solves mu/gamma = f0(c) + gamma^2 f2(c) with f2 from
-    ``asymptotics.second_order``. For the full problem use ``numeric.stick_radius``.
+    Solves mu/gamma = f0(c) = atanh(c)/(c K'(c)) for c, the gamma -> 0 limit at fixed
+    mu/gamma (``asymptotics.second_order.stick_radius_second_order`` adds gamma^2 f2;
+    ``asymptotics.stick_radius`` takes the order as an argument). For the full problem use
+    ``numeric.stick_radius``.
 
     Parameters
     ----------
@@ -306,8 +311,6 @@ def stick_radius(mu: ArrayLike, nu: float | None = None, *, gamma: float | None 
         Poisson's ratio; give exactly one of ``nu`` and ``gamma``.
     gamma : float, optional
         Coupling constant (2.2), 0 <= gamma < 1.
-    order : {0, 2}
-        Order in gamma of the law inverted.
 
     Returns
     -------
@@ -320,58 +323,16 @@ def stick_radius(mu: ArrayLike, nu: float | None = None, *, gamma: float | None 
 
     Examples
     --------
-    >>> round(float(stick_radius(0.509438589023 / 2, gamma=0.5)), 10)
+    >>> round(float(stick_radius_first_order(0.509438589023 / 2, gamma=0.5)), 10)
     0.5
 
     The inversion is conditioned by log(4/c): a relative change of 1e-16 in mu/gamma moves
     c by log(4/c) 1e-16 relative.
     """
-    ratio = _ratio(mu, resolve_gamma(nu, gamma))
-    if order == 0:
-        return scalar_or_array(_stick_radius_order0(ratio))
-    if order == 2:
-        return scalar_or_array(_stick_radius_order2(ratio, resolve_gamma(nu, gamma)))
-    raise ValueError(f"order must be 0 or 2, got {order!r}")
+    return scalar_or_array(_stick_radius_order0(_ratio(mu, resolve_gamma(nu, gamma))))
 
 
-def _stick_radius_order2(ratio: np.ndarray, gamma: float) -> np.ndarray:
-    """Solve ratio = f0(c) + gamma^2 f2(c) by the secant method in u = log(atanh c)."""
-    try:
-        from .second_order import f2
-
-        f2(0.5)  # its generated table is imported on first use
-    except ImportError as exc:
-        raise NotImplementedError(
-            f"stick_radius(order=2) needs asymptotics.second_order.f2, which is not available yet ({exc})"
-        ) from None
-    c0 = _stick_radius_order0(ratio)
-    inner = (c0 > 0.0) & (c0 < 1.0)
-    out = c0.copy()
-    if not np.any(inner):
-        return out
-    target = ratio[inner]
-
-    def residual(u: np.ndarray) -> np.ndarray:
-        c = np.tanh(np.exp(u))
-        return np.asarray(mu_over_gamma(c)) + gamma**2 * np.asarray(f2(c)) - target
-
-    u0 = np.log(np.arctanh(c0[inner]))
-    u1 = u0 - 1e-3
-    r0, r1 = residual(u0), residual(u1)
-    for _ in range(60):
-        denom = np.where(r1 != r0, r1 - r0, 1.0)
-        u2 = np.where(r1 != r0, u1 - r1 * (u1 - u0) / denom, u1)
-        u0, r0 = u1, r1
-        u1, r1 = u2, residual(u2)
-        if np.all(np.abs(u1 - u0) < 1e-14):
-            break
-    else:
-        raise ValueError("no stick radius solves mu/gamma = f0(c) + gamma^2 f2(c) for some mu (secant did not converge)")
-    out[inner] = np.tanh(np.exp(u1))
-    return out
-
-
-def stick_radius_mp(mu_over_gamma_value, dps: int = 30):
+def stick_radius_first_order_mp(mu_over_gamma_value, dps: int = 30):
     """The inverse of (2.28) in mpmath: c with f0(c) = mu/gamma, by a bracketing root finder.
 
     Solves log theta - log(tanh(theta) K(sech^2 theta)) = log(mu/gamma) for
@@ -395,7 +356,7 @@ def stick_radius_mp(mu_over_gamma_value, dps: int = 30):
         hi = mpmath.log(mpmath.pi * r / 2 + 10)
         u = mpmath.findroot(f, (lo, hi), solver="anderson", tol=mpmath.mpf(10) ** (-2 * dps), verify=False)
         if abs(f(u)) > mpmath.mpf(10) ** (-dps - 5):
-            raise ValueError(f"stick_radius_mp: no convergence for mu/gamma = {mu_over_gamma_value!r}")
+            raise ValueError(f"stick_radius_first_order_mp: no convergence for mu/gamma = {mu_over_gamma_value!r}")
         return +mpmath.tanh(mpmath.exp(u))
 
 
@@ -595,8 +556,8 @@ def _tanh_sinh(level: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return left[keep], right[keep], weight[keep]
 
 
-def _rule(a: float, b: float, level: int = 6) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Nodes t in (a, b) with t - a, b - t (accurate) and weights."""
+def tanh_sinh_rule(a: float, b: float, level: int = 6) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Tanh-sinh nodes t in (a, b) with t - a, b - t (accurate) and weights; step 2^-level."""
     left, right, weight = _tanh_sinh(level)
     length = b - a
     return a + length * left, length * left, length * right, length * weight
@@ -605,9 +566,9 @@ def _rule(a: float, b: float, level: int = 6) -> tuple[np.ndarray, np.ndarray, n
 # ---------------------------------------------------------------------------------------
 # (2.34): the compliance at first order
 
-def _first_moment_stick(c: float, level: int = 6) -> float:
-    """int_0^1 (1 - sqrt(1 - t^2)) q^(0)/mu dt, q^(0)/mu = p^(0) (1 - psi) on (0, c), p^(0) on (c, 1)."""
-    t, _, dist_c, w = _rule(0.0, c, level)
+def shear_moment_first_order(c: float, level: int = 6) -> float:
+    """The moment of (2.34): int_0^1 (1 - sqrt(1 - t^2)) q^(0)/mu dt, q^(0)/mu = p^(0) (1 - psi) on (0, c), p^(0) on (c, 1)."""
+    t, _, dist_c, w = tanh_sinh_rule(0.0, c, level)
     t = np.minimum(t, c - dist_c) if c < 1 else t
     shear = _psi_both(t, np.full_like(t, c))[1]
     one_minus_t2 = (1.0 - t) * (1.0 + t)
@@ -647,7 +608,7 @@ def compliance_first_order(c: ArrayLike, gamma: float) -> np.ndarray | float:
         if ci == 1.0:
             out[i] = 1.0 + g * g / 3.0  # (2.36)
         else:
-            out[i] = 1.0 + g * g * float(mu_over_gamma(ci)) * _first_moment_stick(float(ci))  # (2.34)
+            out[i] = 1.0 + g * g * float(mu_over_gamma(ci)) * shear_moment_first_order(float(ci))  # (2.34)
     return scalar_or_array(out.reshape(cs.shape))
 
 
@@ -697,7 +658,7 @@ def _pressure_correction_one(x: float, c: float, f0: float, level: int) -> float
     log_moment = 0.0
     kernel_integral = 0.0
     for a, b in zip(breaks[:-1], breaks[1:]):
-        s, da, db, w = _rule(a, b, level)
+        s, da, db, w = tanh_sinh_rule(a, b, level)
         one_minus_s2 = db * (1.0 + s) if b == 1.0 else (1.0 - s) * (1.0 + s)
         if b <= c:  # d/ds of h^(0)/mu: stick zone (2/pi) atanh(s)/f0, slip annulus (2/pi) s K'(s)
             slope = (2.0 / np.pi) / (f0 * one_minus_s2)
@@ -733,7 +694,7 @@ def pressure_correction(x: ArrayLike, c: float) -> np.ndarray | float:
     single integrals done by tanh-sinh rules split at x and c. At x = 0 the value is the
     limit x -> 0+ (P ~ -pi/sqrt(x^2 - s^2) on (0, x) leaves -(pi^2/2) h'(0) behind). P1 ~ log(1-x)/sqrt(1-x) at the
     edge; it is checked by substitution into (2.33) and against the solver at small gamma
-    in tests/test_derive_flat_punch.py.
+    in tests/test_derive_first_order.py.
 
     Parameters
     ----------

@@ -38,7 +38,7 @@ from sympy import (Eq, Function, Integral, Rational, S, Symbol, Tuple, atanh, be
 
 from ..derivation import Comparison, Derivation, Identity, Step
 from .precision import at_precision, exact
-from ..power_law import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
+from ..similarity import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
                          frictionless_pressure_power_law)
 
 __all__ = ["derivations"]
@@ -424,7 +424,7 @@ def _d316() -> tuple[Derivation, Derivation]:
         steps=tuple(edge_steps),
         note=("Not in the paper: a companion of (3.16) needing only the flat punch's shear q0. For general n, "
               "W_n(s) = s^n - (n/2) B(s^2; n/2, 1/2). With the adhesive q0 of (B3) it reproduces A of (4.18) "
-              "(tests/test_derive_power_law.py)."),
+              "(tests/test_derive_similarity.py)."),
     )
     return main, edge
 

@@ -12,7 +12,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from asymptotics import flat_punch as fp
+from asymptotics import first_order as fp
+from asymptotics import stick_radius
 from asymptotics.materials import gamma_from_nu
 
 LABELS = ("(2.26)", "(2.27)", "(2.28)", "(2.29)", "(2.30)", "(2.31)", "(2.33)", "(2.34)", "(2.35)", "(2.36)")
@@ -20,7 +21,7 @@ LABELS = ("(2.26)", "(2.27)", "(2.28)", "(2.29)", "(2.30)", "(2.31)", "(2.33)", 
 
 @pytest.fixture(scope="module")
 def entries():
-    from asymptotics.derive.flat_punch import derivations
+    from asymptotics.derive.first_order import derivations
 
     start = time.perf_counter()
     result = {d.label: d for d in derivations()}
@@ -43,7 +44,7 @@ def test_the_parameter_reading_of_heuman_fails(entries):
 
 @pytest.mark.parametrize("x, c", [(0.2, 0.3), (1e-4, 0.7), (0.69, 0.7), (0.95, 0.999)])
 def test_psi_against_direct_quadrature_of_2_14(x, c):
-    from asymptotics.derive.flat_punch import phi_direct_mp
+    from asymptotics.derive.first_order import phi_direct_mp
 
     with mpmath.workdps(25):
         direct = phi_direct_mp(x, c) * mpmath.sqrt(1 - mpmath.mpf(x) ** 2) * mpmath.pi / 2
@@ -83,9 +84,9 @@ def test_monotonicity_claims_after_2_31(entries):
 @pytest.mark.parametrize("ratio", [1e-3, 0.01, 0.05, 0.1, 0.3, 1.0, 2.0, 5.0, 12.5, 1e3])
 def test_stick_radius_against_mpmath_root(ratio):
     gamma = 0.25
-    c = float(fp.stick_radius(ratio * gamma, gamma=gamma))
+    c = float(fp.stick_radius_first_order(ratio * gamma, gamma=gamma))
     with mpmath.workdps(60):
-        exact = fp.stick_radius_mp(ratio, dps=40)
+        exact = fp.stick_radius_first_order_mp(ratio, dps=40)
         if exact < mpmath.mpf(2) ** -1022:  # below the normal doubles (ratio = 1e-3: c = 2e-434)
             assert c == 0.0
             return
@@ -101,7 +102,7 @@ def test_stick_radius_against_mpmath_root(ratio):
 
 def test_stick_radius_round_trip():
     c = np.concatenate([np.logspace(-12, -1, 23), np.linspace(0.1, 0.99, 90), 1 - np.logspace(-2, -9, 8)])
-    back = fp.stick_radius(fp.mu_over_gamma(c) * 0.3, gamma=0.3)
+    back = fp.stick_radius_first_order(fp.mu_over_gamma(c) * 0.3, gamma=0.3)
     small = c < 0.5
     # relative in c: conditioning log(4/c) times a few ulps of f0
     assert np.all(np.abs(back[small] / c[small] - 1) <= 8e-16 * (1 + np.log(4 / c[small])))
@@ -110,25 +111,26 @@ def test_stick_radius_round_trip():
     assert np.all(np.abs((1 - back[near]) / (1 - c[near]) - 1) <= 2.3e-16 / (1 - c[near]) + 1e-14)
     # the other way round, up to mu/gamma = 2 (1 - c = 3.8e-3): f0 is then resolved to ~1e-14
     ratio = np.logspace(-2, np.log10(2.0), 50)
-    c2 = fp.stick_radius(ratio * 0.2, gamma=0.2)
+    c2 = fp.stick_radius_first_order(ratio * 0.2, gamma=0.2)
     assert np.all(np.abs(fp.mu_over_gamma(c2) / ratio - 1) <= 1e-14)
 
 
 def test_stick_radius_edge_cases_and_nu():
-    assert fp.stick_radius(0.0, gamma=0.3) == 0.0
-    assert fp.stick_radius(np.inf, gamma=0.3) == 1.0
-    assert list(fp.stick_radius([0.0, 0.1, np.inf], gamma=0.0)) == [0.0, 1.0, 1.0]
-    assert fp.stick_radius(0.2, 0.3) == fp.stick_radius(0.2, gamma=float(gamma_from_nu(0.3)))
-    assert np.all(np.diff(fp.stick_radius(np.linspace(0.0, 2.0, 101), gamma=0.5)) >= 0.0)
+    assert fp.stick_radius_first_order(0.0, gamma=0.3) == 0.0
+    assert fp.stick_radius_first_order(np.inf, gamma=0.3) == 1.0
+    assert list(fp.stick_radius_first_order([0.0, 0.1, np.inf], gamma=0.0)) == [0.0, 1.0, 1.0]
+    assert fp.stick_radius_first_order(0.2, 0.3) == fp.stick_radius_first_order(0.2, gamma=float(gamma_from_nu(0.3)))
+    assert np.all(np.diff(fp.stick_radius_first_order(np.linspace(0.0, 2.0, 101), gamma=0.5)) >= 0.0)
 
 
 @pytest.mark.parametrize("call", [
-    lambda: fp.stick_radius(-0.1, gamma=0.3),
-    lambda: fp.stick_radius(float("nan"), gamma=0.3),
-    lambda: fp.stick_radius(0.1, 0.3, gamma=0.3),
-    lambda: fp.stick_radius(0.1),
-    lambda: fp.stick_radius(0.1, gamma=0.3, order=1),
-    lambda: fp.stick_radius(0.1, gamma=1.0),
+    lambda: fp.stick_radius_first_order(-0.1, gamma=0.3),
+    lambda: fp.stick_radius_first_order(float("nan"), gamma=0.3),
+    lambda: fp.stick_radius_first_order(0.1, 0.3, gamma=0.3),
+    lambda: fp.stick_radius_first_order(0.1),
+    lambda: stick_radius(0.1, gamma=0.3, order=1),
+    lambda: stick_radius(-0.1, gamma=0.3, order=1),
+    lambda: fp.stick_radius_first_order(0.1, gamma=1.0),
     lambda: fp.c_small_mu(0.1, 0.3, terms=0),
     lambda: fp.c_large_mu(0.1, 0.3, terms=5),
     lambda: fp.psi(0.6, 0.5),
@@ -153,11 +155,12 @@ def test_stick_radius_order_two():
         second_order.f2(0.5)
     except ImportError as exc:  # the generated table of the other module is not there yet
         with pytest.raises(NotImplementedError):
-            fp.stick_radius(0.1, gamma=0.2, order=2)
+            stick_radius(0.1, gamma=0.2, order=2)
         pytest.skip(f"asymptotics.second_order.f2 unavailable: {exc}")
     gamma = 0.2
     ratio = np.array([0.3, 0.5, 1.0])
-    c = fp.stick_radius(ratio * gamma, gamma=gamma, order=2)
+    c = stick_radius(ratio * gamma, gamma=gamma, order=2)
+    assert np.array_equal(c, second_order.stick_radius_second_order(ratio * gamma, gamma=gamma))
     # the secant stops at 1e-14 in log(atanh c); f2 itself is a ~1e-12 table
     assert np.allclose(fp.mu_over_gamma(c) + gamma**2 * second_order.f2(c), ratio, rtol=1e-12)
 
@@ -197,7 +200,7 @@ def test_each_further_term_improves_the_order(entries):
 def test_asymptotic_forms_meet_the_exact_inverse():
     # terms = 4 is exact to rounding for mu/gamma <= 0.1 (error ~ (E z)^4 < 1e-30)
     for ratio in (0.02, 0.05, 0.1):
-        assert float(fp.c_small_mu(ratio * 0.5, 0.5, terms=4)) == pytest.approx(float(fp.stick_radius_mp(ratio)), rel=2e-15)
+        assert float(fp.c_small_mu(ratio * 0.5, 0.5, terms=4)) == pytest.approx(float(fp.stick_radius_first_order_mp(ratio)), rel=2e-15)
 
 
 # ---------------------------------------------------------------------------------------
@@ -206,7 +209,7 @@ def test_asymptotic_forms_meet_the_exact_inverse():
 @pytest.mark.slow  # ~2 s a point; the derivation itself checks c = 0.5, x = 0.5
 @pytest.mark.parametrize("c, xs", [(0.9, (0.3,)), (0.2, (0.95,))])
 def test_pressure_correction_satisfies_2_33(c, xs):
-    from asymptotics.derive.flat_punch import _substitution_residual
+    from asymptotics.derive.first_order import _substitution_residual
 
     # SciPy quad of a log-singular integrand: ~1e-9
     assert _substitution_residual(c, xs) < 1e-8

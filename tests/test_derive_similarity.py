@@ -1,4 +1,4 @@
-"""The §3 derivations (asymptotics.derive.power_law) and the fast functions of asymptotics.power_law.
+"""The §3 derivations (asymptotics.derive.similarity) and the fast functions of asymptotics.similarity.
 
 Oracles: the SymPy derivations themselves (agrees), mpmath at 30-40 digits (Identities,
 ``precise``), and quadratures written here independently of the code under test.
@@ -12,8 +12,8 @@ import pytest
 from scipy import integrate
 
 from asymptotics.adhesive import shear_adhesive, sphere_A_adhesive
-from asymptotics.derive.power_law import derivations
-from asymptotics.power_law import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
+from asymptotics.derive.similarity import derivations
+from asymptotics.similarity import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
                                    frictionless_indentation_constant, frictionless_pressure_power_law)
 
 LABELS = ("(3.5)", "(3.10)", "(3.13)", "(3.15)", "(3.16)", "(3.16)-edge", "(3.17)", "(3.18)", "(3.19)",
@@ -147,7 +147,7 @@ def test_commutation_check_can_fail():
     # and the degree-0 Abel operator of u* does not commute with D~ = D - 1/n.
     from sympy import Integral, sqrt
 
-    from asymptotics.derive import power_law as pl
+    from asymptotics.derive import similarity as pl
 
     l11 = next(iter(pl._operator_pieces().values()))[0]
     assert not pl._commutation(l11, 0)[0]

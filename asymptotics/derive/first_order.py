@@ -4,7 +4,7 @@ Each result is derived from the equations it comes from ((2.2), (2.4), (2.11)-(2
 SymPy operations (integrate, series, limit, solve, substitution, Abel inversion); the steps
 SymPy cannot do (elliptic integrals) are :class:`Identity` objects checked in mpmath at 40
 digits. ``derivations()`` runs once per process (cached); it takes a few seconds
-(tests/test_derive_flat_punch.py times it).
+(tests/test_derive_first_order.py times it).
 
 References
 ----------
@@ -20,7 +20,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from .. import flat_punch as fp
+from .. import first_order as fp
 from ..adhesive import compliance_adhesive, shear_adhesive
 from ..derivation import Comparison, Derivation, Identity, Step
 
@@ -44,7 +44,7 @@ def _same_numerically(a, b, var, points, tol=1e-25) -> bool:
 
 
 # ---------------------------------------------------------------------------------------
-# mpmath evaluators used by the identities (independent of asymptotics.flat_punch)
+# mpmath evaluators used by the identities (independent of asymptotics.first_order)
 
 def _k_prime_mp(k):
     """K'(k) = K(m = 1 - k^2) in mpmath; ellipk loses |log10(1 - m)| digits as m -> 1, so
@@ -269,9 +269,9 @@ def _d228() -> Derivation:
         ),
         fast=fp.mu_over_gamma, precise=fp.mu_over_gamma_mp, arguments=("c",),
         comparison=Comparison(points=((1e-8,), (1e-3,), (0.1,), (0.5,), (0.9,), (1 - 1e-9,)), rtol=1e-14),
-        note="Exact as gamma -> 0 at fixed c. The inverse c(mu/gamma) is asymptotics.flat_punch.stick_radius "
-             "(Newton in log atanh c; stick_radius_mp by a bracketing root finder in mpmath).",
-        extra={"inverse": fp.stick_radius, "inverse_precise": fp.stick_radius_mp},
+        note="Exact as gamma -> 0 at fixed c. The inverse c(mu/gamma) is asymptotics.first_order.stick_radius_first_order "
+             "(Newton in log atanh c; stick_radius_first_order_mp by a bracketing root finder in mpmath).",
+        extra={"inverse": fp.stick_radius_first_order, "inverse_precise": fp.stick_radius_first_order_mp},
     )
 
 
@@ -381,15 +381,15 @@ def _asymptotic_error_table():
     small_rows, large_rows = [], []
     for ratio in (0.5, 0.35, 0.25, 0.2, 0.15, 0.1):
         with mpmath.workdps(40):
-            exact = fp.stick_radius_mp(ratio, dps=40)
+            exact = fp.stick_radius_first_order_mp(ratio, dps=40)
             errors = [float(abs(mpmath.mpf(float(fp.c_small_mu(0.5 * ratio, 0.5, terms=k))) / exact - 1))
                       for k in (1, 2, 3, 4)]
         small_rows.append((ratio, *errors))
     for ratio in (0.5, 0.75, 1.0, 1.5, 2.0, 3.0):
         with mpmath.workdps(60):
-            exact = 1 - fp.stick_radius_mp(ratio, dps=60)
+            exact = 1 - fp.stick_radius_first_order_mp(ratio, dps=60)
             # the complement itself (c_large_mu returns c, whose 1 - c is limited by rounding)
-            errors = [float(abs(mpmath.mpf(float(fp._large_mu_complement(np.array(ratio), k))) / exact - 1)) for k in (1, 2, 3, 4)]
+            errors = [float(abs(mpmath.mpf(float(fp.one_minus_c_large_mu(np.array(ratio), k))) / exact - 1)) for k in (1, 2, 3, 4)]
         large_rows.append((ratio, *errors))
     return tuple(small_rows), tuple(large_rows)
 
@@ -431,7 +431,7 @@ def _d229() -> Derivation:
         identities=(identity,),
         note="These are limits of the FIRST-ORDER law (2.28) (gamma -> 0 at fixed c), not of the full problem. "
              "Beyond the paper: the corrections in z = exp(-2 gamma/mu) and w = exp(-pi mu/gamma) "
-             "(asymptotics.flat_punch.c_small_mu, c_large_mu, coefficients frozen there and compared with these "
+             "(asymptotics.first_order.c_small_mu, c_large_mu, coefficients frozen there and compared with these "
              "in the tests). Measured relative errors against the exact inverse of (2.28) (mpmath root finder) are "
              "in extra['small_mu_errors'] (error in c; columns: mu/gamma, terms = 1..4) and extra['large_mu_errors'] "
              "(error in 1 - c): each further term gains a factor ~E z resp. ~pi M w.",
@@ -524,7 +524,7 @@ def _d231() -> Derivation:
         ),
         fast=fp.shear_ratio_first_order, precise=fp.shear_ratio_first_order_mp, arguments=("x", "c"),
         comparison=Comparison(points=((0.3, 0.5), (1e-6, 0.5), (1e-8, 1e-6), (0.5, 0.999999), (0.7, 0.5)), rtol=1e-13),
-        note="Public name: asymptotics.flat_punch.shear_ratio_first_order(x, c) (fraction of limiting friction "
+        note="Public name: asymptotics.first_order.shear_ratio_first_order(x, c) (fraction of limiting friction "
              "mobilised), extended by 1 on the slip annulus c <= x < 1. Near x = 0, where it vanishes like x, it is "
              "computed from the addition theorem of the incomplete integrals (no cancellation).",
     )
@@ -536,7 +536,7 @@ def _substitution_residual(c_: float, xs=(0.5,)) -> float:
     Left: int_x^1 t P1 dt/sqrt(t^2 - x^2) = int_0^sqrt(1-x^2) P1(sqrt(x^2 + v^2)) dv by SciPy quad
     (its extrapolation copes with the log singularity at the end, where t rounds to 1 for a
     fixed rule). Right: f0 [int_0^1 q_hat - x int_0^(pi/2) q_hat(x sin theta) d theta], split where
-    x sin theta = c, by tanh-sinh rules (asymptotics.flat_punch._rule). Agreement ~1e-9.
+    x sin theta = c, by tanh-sinh rules (asymptotics.first_order.tanh_sinh_rule). Agreement ~1e-9.
     """
     from scipy import integrate
 
@@ -546,7 +546,7 @@ def _substitution_residual(c_: float, xs=(0.5,)) -> float:
         return np.asarray(fp.frictionless_pressure(t_)) * np.asarray(fp.shear_ratio_first_order(t_, c_))
 
     def integral(f, a_, b_):
-        nodes, _, _, weights = fp._rule(a_, b_, 6)
+        nodes, _, _, weights = fp.tanh_sinh_rule(a_, b_, 6)
         return float(np.dot(weights, f(nodes)))
 
     total = integral(q_hat, 0.0, c_) + (2 / np.pi) * np.arccos(c_)
@@ -607,7 +607,7 @@ def _d233() -> Derivation:
         fast=fp.pressure_correction, precise=fp.pressure_correction_mp, arguments=("x", "c"),
         comparison=Comparison(points=((0.5, 0.5), (0.99, 0.2)), rtol=1e-12),
         note=f"Normalisation: p = p^(0) + gamma^2 P1(x; c) + ... with mu = gamma f0(c); the paper's gamma p^(1) is "
-             f"gamma^2 P1 because q^(0) is itself O(gamma). P1 = asymptotics.flat_punch.pressure_correction. "
+             f"gamma^2 P1 because q^(0) is itself O(gamma). P1 = asymptotics.first_order.pressure_correction. "
              f"Substituted back into (2.33) at c = 0.5, x = 0.5: residual {residual:.1e}. "
              f"At x = 0 the formula's value is its limit x -> 0+. The tests compare gamma^2 P1 with the full "
              f"solver's p - p^(0) at small gamma (difference O(gamma^4)).",
@@ -722,7 +722,7 @@ def _d236() -> Derivation:
     half = sp.Rational(1, 2)
     first_order_half = float(derived_rhs.subs(gamma, half))
     exact_half = float(sp.N(exact.subs(gamma, half), 20))
-    numeric_limit = float(fp.mu_over_gamma(1 - 1e-12)) * fp._first_moment_stick(1 - 1e-12)
+    numeric_limit = float(fp.mu_over_gamma(1 - 1e-12)) * fp.shear_moment_first_order(1 - 1e-12)
     return Derivation(
         label="(2.36)", part=PART, title="adhesive compliance at first order: P* = 1 + gamma^2/3",
         derived=sp.Eq(sp.Symbol("P^*"), derived_rhs), printed=sp.Eq(sp.Symbol("P^*"), printed_rhs),

@@ -1,13 +1,13 @@
 """Build the Chebyshev table of the eigenvalue relation mu(c, gamma) and of P*(c, gamma).
 
-Computes the level-3 solution (``numeric.eigen.solve_mu``, ~1e-12) on a tensor grid of
+Computes the level-3 solution (``numeric.core.eigen.solve_mu``, ~1e-12) on a tensor grid of
 Chebyshev points of the first kind in xi = logit(c) (c in [C_MIN, C_MAX]) and
 eta = gamma^2 (gamma in [0, GAMMA_MAX]), turns the values of
 log(mu / (gamma f0(c))) (f0 the small-gamma law (2.28); this ratio tends to 1 as
 gamma -> 0) and of P* into Chebyshev coefficients, and checks the interpolant at random
 points that are not grid points and at the corners and edge midpoints of the domain against
 fresh level-4 solves (level 3 below c = 1e-2, where level 4 does not converge). Writes the
-generated module ``numeric/_eigen_table.py`` with the coefficients and the measured error.
+generated module ``numeric/core/table_data.py`` with the coefficients and the measured error.
 
 Run time: about 9 minutes on 2 cores.
 
@@ -23,9 +23,9 @@ from pathlib import Path
 import numpy as np
 
 from asymptotics.first_order import mu_over_gamma
-from numeric.discretize import LEVELS
-from numeric.eigen import solve_mu
-from numeric.eigen_table import _evaluate
+from numeric.core.mesh import LEVELS
+from numeric.core.eigen import solve_mu
+from numeric.core.table import _evaluate
 
 ROOT = Path(__file__).resolve().parents[1]
 C_MIN, C_MAX, GAMMA_MAX = 1e-3, 0.95, 2.0 / 3.0
@@ -98,7 +98,7 @@ def main() -> None:
         "]",
         "",
     ]
-    (ROOT / "numeric" / "_eigen_table.py").write_text("\n".join(lines), encoding="utf-8")
+    (ROOT / "numeric" / "core" / "table_data.py").write_text("\n".join(lines), encoding="utf-8")
     print(f"grid {N_XI} x {N_ETA} in {build:.0f} s; check: mu rel {worst_mu:.2e}, P* abs {worst_p:.2e}")
 
 

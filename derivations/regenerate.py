@@ -2,13 +2,13 @@
 
 Computes:
 - ``paper_tables.md``: the tables of [S75] §4 and §4.2 recomputed with the paper's scheme
-  beside the exact values (``numeric.paper_tables``), about 1 s;
+  beside the exact values (``numeric.studies.paper_tables``), about 1 s;
 - ``section_2_3.md``, ``section_3.md``, ``appendix_b.md``: one document per part of the
   paper, from ``asymptotics.registry`` (statements, SymPy steps, identities checked with
   mpmath, fast against precise evaluations), and in §2.3 the check of every expansion
-  against the full solution (``numeric.expansion_checks``);
+  against the full solution (``numeric.studies.expansion_checks``);
 - ``figures/``: the paper's figures 2-6 redrawn from our solutions and figures the paper
-  lacks (``numeric.figures``), PNG with the plotted data as CSV beside each.
+  lacks (``numeric.studies.figures``), PNG with the plotted data as CSV beside each.
 
 Run from the repository root::
 
@@ -54,7 +54,7 @@ def part_blocks(name: str, study=None) -> list[tuple[str, str | None]]:
     _, figures = PART_DOCUMENTS[name]
     extra: dict[str, str | None] = {}
     if name == "2.3":
-        from numeric.expansion_checks import render_markdown
+        from numeric.studies.expansion_checks import render_markdown
 
         extra["expansion-checks"] = None if study is None else render_markdown(study)
     if figures:
@@ -71,7 +71,7 @@ def _merge(blocks: list[tuple[str, str | None]], committed: str) -> str:
 
 def documents(study) -> dict[str, Callable[[str], str]]:
     """File name -> function of the committed text giving the regenerated text."""
-    from numeric.paper_tables import render
+    from numeric.studies.paper_tables import render
 
     docs: dict[str, Callable[[str], str]] = {"paper_tables.md": lambda _: render() + "\n"}
     for name, (file, _) in PART_DOCUMENTS.items():
@@ -80,8 +80,8 @@ def documents(study) -> dict[str, Callable[[str], str]]:
 
 
 def write_figures(study) -> list[Path]:
-    from numeric.expansion_checks import plot_expansion_errors
-    from numeric.figures import write_figures as write
+    from numeric.studies.expansion_checks import plot_expansion_errors
+    from numeric.studies.figures import write_figures as write
 
     FIGURES.mkdir(exist_ok=True)
     paths = write(FIGURES)
@@ -96,7 +96,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     study = None
     if not args.fast:
-        from numeric.expansion_checks import expansion_study
+        from numeric.studies.expansion_checks import expansion_study
 
         study = expansion_study(fast=False)
     stale = []

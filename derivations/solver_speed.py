@@ -65,7 +65,7 @@ def main() -> None:
     cs = stick_radius(mus, nus)
     batch = time.perf_counter() - t0
     outside = int(np.sum(cs > 0.95))
-    lines += ["## stick_radius from the Chebyshev table (numeric.eigen_table)", "",
+    lines += ["## stick_radius from the Chebyshev table (numeric.core.table)", "",
               f"- One (mu, nu) pair: {one:.2f} ms median.",
               f"- 1000 pairs inside the table's domain (1e-3 <= c <= 0.95, -0.5 <= nu <= 0.5): {1e3 * batch_in:.1f} ms.",
               f"- 200 random pairs, mu in [0.15, 1], nu in [-0.5, 0.49]: {batch:.1f} s; {outside} of them have "

@@ -1,13 +1,20 @@
 """Numerical solutions of the Hertz contact problem with finite friction (Spence 1975).
 
-High-accuracy solver: ``flat_punch``, ``stick_radius``, ``friction_coefficient``
-(``numeric.flat_punch``) and ``power_law`` (``numeric.power_law``). The paper's own scheme,
-the baseline, is ``numeric.spence1975``.
+The public API: ``flat_punch``, ``stick_radius``, ``friction_coefficient``
+(``numeric.solutions.flat_punch``) and ``power_law`` (``numeric.solutions.power_law``), with
+their result types and errors. This is the only module of ``numeric`` that re-exports.
+
+The folders are the layers, and imports only go down (``tests/test_layers.py`` checks it):
+``app`` (SI calculator, command line) -> ``studies`` (tables, benchmark, stability,
+expansion checks, figures) -> ``solutions`` (the problems and their routes) and
+``baseline`` (the paper's own scheme of §4, independent of ``core`` on purpose) -> ``core``
+(quadrature, mesh, collocation, eigenvalue, table) -> ``asymptotics`` -> numpy, scipy, mpmath.
 """
 
-from .flat_punch import (AccuracyWarning, FlatPunchSolution, NoEigenvalueError, SolverError, flat_punch,
-                         friction_coefficient, stick_radius)
-from .power_law import PowerLawSolution, power_law
+from numeric.core.eigen import NoEigenvalueError, SolverError
+from numeric.solutions.flat_punch import (AccuracyWarning, FlatPunchSolution, flat_punch, friction_coefficient,
+                                          stick_radius)
+from numeric.solutions.power_law import PowerLawSolution, power_law
 
 __all__ = [
     "AccuracyWarning",

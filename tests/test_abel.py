@@ -3,7 +3,7 @@
 import mpmath
 import numpy as np
 
-from numeric.abel import lower_abel_weights, upper_abel_weights
+from numeric.baseline.abel import lower_abel_weights, upper_abel_weights
 
 
 def _reference(nodes, x):

@@ -1,4 +1,4 @@
-"""The benchmark (``numeric.bench``): its rows carry the right errors, and the headline logic.
+"""The benchmark (``numeric.studies.bench``): its rows carry the right errors, and the headline logic.
 
 The full benchmark takes minutes and its timings are not reproducible; here it runs in a
 tiny configuration (the adhesive case nu = 0, the paper's scheme on its mesh (ii) and the
@@ -12,8 +12,9 @@ import time
 
 import pytest
 
-from numeric import bench, spence1975
-from numeric.bench import (
+from numeric.baseline import scheme as spence1975
+from numeric.studies import bench
+from numeric.studies.bench import (
     SCHEME,
     SOLVER,
     TABLE,
@@ -129,8 +130,8 @@ def test_clear_caches_empties_the_solver_caches():
     spence1975.solve_adhesive(spence1975.uniform_mesh(10), 0.0)
     assert spence1975._collocation_matrix.cache_info().currsize > 0
     names = clear_caches()
-    assert "numeric.spence1975._collocation_matrix" in names
-    assert "numeric.discretize._reference" in names
+    assert "numeric.baseline.scheme._collocation_matrix" in names
+    assert "numeric.core.mesh._reference" in names
     assert spence1975._collocation_matrix.cache_info().currsize == 0
 
 

@@ -1,8 +1,8 @@
-"""Physical units (numeric.contact) against the classical closed forms and the paper's scalings.
+"""Physical units (numeric.app.contact) against the classical closed forms and the paper's scalings.
 
 References: Hertz (sphere), Boussinesq (flat punch) and Sneddon (cone) frictionless solutions
 written out here from the textbook formulas, CONTACT's combin_mater (Kalker's (1.44)) and
-Dundurs' beta in its kappa form, typed in independently of numeric.contact.
+Dundurs' beta in its kappa form, typed in independently of numeric.app.contact.
 """
 
 import math
@@ -13,7 +13,7 @@ import pytest
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.materials import gamma_dissimilar, gamma_from_nu
 from numeric import flat_punch
-from numeric.contact import Elastic, FlatPunch, MaterialPair, PowerLaw, elastic, indent
+from numeric.app.contact import Elastic, FlatPunch, MaterialPair, PowerLaw, elastic, indent
 
 GLASS = dict(E=70e9, nu=0.22)
 STEEL = dict(E=210e9, nu=0.3)

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from numeric.paper_tables import render
+from numeric.studies.paper_tables import render
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -1,4 +1,4 @@
-"""The Chebyshev table of the eigenvalue relation against fresh solves (numeric.eigen_table)."""
+"""The Chebyshev table of the eigenvalue relation against fresh solves (numeric.core.table)."""
 
 import subprocess
 import sys
@@ -7,11 +7,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import numeric._eigen_table as data
+import numeric.core.table_data as data
 from numeric import flat_punch, friction_coefficient, stick_radius
-from numeric.discretize import LEVELS
-from numeric.eigen import solve_mu
-from numeric.eigen_table import table_compliance, table_friction_coefficient, table_stick_radius
+from numeric.core.mesh import LEVELS
+from numeric.core.eigen import solve_mu
+from numeric.core.table import table_compliance, table_friction_coefficient, table_stick_radius
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -61,6 +61,6 @@ def test_broadcasting_and_scalars():
 def test_table_regenerates_identically(tmp_path):
     # The build is deterministic (fixed grid, fixed random seed, deterministic solver):
     # regenerating must reproduce the committed module byte for byte (about 5 minutes).
-    committed = (ROOT / "numeric" / "_eigen_table.py").read_text(encoding="utf-8")
+    committed = (ROOT / "numeric" / "core" / "table_data.py").read_text(encoding="utf-8")
     subprocess.run([sys.executable, str(ROOT / "derivations" / "build_eigen_table.py")], check=True)
-    assert (ROOT / "numeric" / "_eigen_table.py").read_text(encoding="utf-8") == committed
+    assert (ROOT / "numeric" / "core" / "table_data.py").read_text(encoding="utf-8") == committed

@@ -1,4 +1,4 @@
-"""Observed orders of the §2.3 expansions against the full solution (numeric.expansion_checks).
+"""Observed orders of the §2.3 expansions against the full solution (numeric.studies.expansion_checks).
 
 The fast study (Chebyshev table for mu and P*, level-2 stresses, ~5 s of CPU) is computed once.
 The expected orders come from the structure of the expansion (mu/gamma and P* are series in
@@ -24,7 +24,7 @@ import pytest
 from asymptotics.second_order import f2_quadrature as _f2_quadrature
 from asymptotics.first_order import mu_over_gamma
 from numeric import flat_punch
-from numeric.expansion_checks import (
+from numeric.studies.expansion_checks import (
     NUS,
     expansion_errors,
     expansion_study,
@@ -205,9 +205,9 @@ def test_largest_stick_radius():
     # c_max from the quadratic fit of 1/mu(c) is checked by fresh solves on either side at
     # gamma = 2/3: 2 % of 1 - c_max inside, mu is large (> 50; the fit's slope gives ~100);
     # 2 % outside, no friction coefficient gives c (NoEigenvalueError). (flat_punch for given
-    # mu = 1000 would be the other route, but it warns of an overflow in numeric/eigen.py.)
+    # mu = 1000 would be the other route, but it warns of an overflow in numeric/core/eigen.py.)
     from numeric import NoEigenvalueError
-    from numeric.expansion_checks import _largest_stick
+    from numeric.studies.expansion_checks import _largest_stick
 
     estimates = {e.gamma: e for e in _largest_stick(False)[1]}
     gap = estimates[2.0 / 3.0].one_minus_c_max

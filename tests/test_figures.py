@@ -1,4 +1,4 @@
-"""Tests of numeric.figures: each figure's data against independent checks, and a smoke test.
+"""Tests of numeric.studies.figures: each figure's data against independent checks, and a smoke test.
 
 The data, not the pixels, are tested. Sweeps toward c = 1 are shortened here (fixture
 ``short_sweeps``) so the file stays fast; the full generation is the slow test at the end.
@@ -17,8 +17,9 @@ import pytest
 
 from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_from_nu
-from numeric import figures, flat_punch, friction_coefficient
-from numeric.power_law import indentation_constant_316
+from numeric import flat_punch, friction_coefficient
+from numeric.studies import figures
+from numeric.solutions.power_law import indentation_constant_316
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -287,7 +288,7 @@ def test_write_figures_rejects_bad_arguments(tmp_path):
 
 
 def test_import_does_not_load_matplotlib():
-    code = "import sys, numeric.figures; assert 'matplotlib' not in sys.modules"
+    code = "import sys, numeric.studies.figures; assert 'matplotlib' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)
 
 

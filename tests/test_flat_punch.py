@@ -2,7 +2,7 @@
 
 Each numerical claim is checked against something the solver does not compute itself:
 exact closed forms evaluated here with ``math``/mpmath (App. B, (2.26), (4.10)), the paper's
-own scheme (``numeric.spence1975``) extrapolated in its mesh width, the solver's own finer
+own scheme (``numeric.baseline.scheme``) extrapolated in its mesh width, the solver's own finer
 levels (a convergence study), the small-gamma law (2.28), the local analysis of
 reformulation.md and the constraints (2.8)-(2.9). Every tolerance says where it comes from;
 measured values quoted in comments were measured once when the test was written.
@@ -23,10 +23,10 @@ from asymptotics.adhesive import pressure_adhesive_mp, shear_adhesive_mp
 from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_dissimilar
 from numeric import NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
-from numeric.discretize import LEVELS
-from numeric.eigen import solve_adhesive, solve_mu
-from numeric.paper_tables import PAPER
-from numeric.spence1975 import solve_friction
+from numeric.core.mesh import LEVELS
+from numeric.core.eigen import solve_adhesive, solve_mu
+from numeric.studies.paper_tables import PAPER
+from numeric.baseline.scheme import solve_friction
 
 
 def _gamma(nu: float) -> float:

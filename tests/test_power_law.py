@@ -16,9 +16,7 @@ import pytest
 
 from asymptotics import adhesive
 from asymptotics.first_order import frictionless_pressure
-import importlib
-
-pl = importlib.import_module("numeric.power_law")  # the module; numeric.power_law is the function
+from numeric.solutions import power_law as pl
 
 BREAKPOINTS = np.concatenate([[0.0, 0.5], 1.0 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])
 

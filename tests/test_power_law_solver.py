@@ -5,16 +5,15 @@ solution is the solver's, and the checks are the structural identities of §3 an
 paper's numbers.
 """
 
-import importlib
 import math
 
 import numpy as np
 import pytest
 
 from numeric import flat_punch, power_law
-from numeric.paper_tables import PAPER
-from numeric.power_law import displacement_constant, indentation_constant_316
-from numeric.spence1975 import solve_friction, sphere_from_flat
+from numeric.studies.paper_tables import PAPER
+from numeric.solutions.power_law import displacement_constant, indentation_constant_316
+from numeric.baseline.scheme import solve_friction, sphere_from_flat
 
 
 @pytest.fixture(scope="module")
@@ -82,7 +81,8 @@ def test_inverse_A_against_the_paper(key):
 
 
 def test_A_and_C_are_computed_on_first_access_and_kept(monkeypatch):
-    pl = importlib.import_module("numeric.power_law")
+    from numeric.solutions import power_law as pl
+
     calls = []
     real = pl.indentation_constant
     monkeypatch.setattr(pl, "indentation_constant", lambda flat, n: calls.append(n) or real(flat, n))

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from numeric.cli import main
+from numeric.app.cli import main
 
 README = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
 EXAMPLES = re.findall(r"```console\n\$ (hertz-friction [^\n]*)\n(.*?)```", README, re.S)

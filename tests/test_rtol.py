@@ -19,8 +19,8 @@ from asymptotics.first_order import compliance_first_order, frictionless_pressur
 from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
 from numeric import NoEigenvalueError, power_law
-from numeric.asymptotic_law import law_bracket as _law_bracket
-from numeric.flat_punch import (
+from numeric.solutions.law import law_bracket as _law_bracket
+from numeric.solutions.flat_punch import (
     C_ASYMPTOTIC,
     AccuracyWarning,
     _table_meets,

@@ -18,8 +18,8 @@ from asymptotics.adhesive import (
     sphere_C_adhesive,
 )
 from asymptotics.materials import gamma_from_nu
-from numeric.paper_tables import PAPER
-from numeric.spence1975 import (
+from numeric.studies.paper_tables import PAPER
+from numeric.baseline.scheme import (
     Mesh,
     friction_mesh,
     paper_mesh,

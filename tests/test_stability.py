@@ -1,4 +1,4 @@
-"""Property-based stress tests of the solver ([S75] §2) and the smoke test of numeric.stability.
+"""Property-based stress tests of the solver ([S75] §2) and the smoke test of numeric.studies.stability.
 
 Hypothesis draws (nu, mu) or (nu, c) from the admissible domain where the solver is
 documented to work (c in [0.05, 0.95], nu in [-0.5, 0.45]: gamma from 2/3 to 0.09) and checks
@@ -21,15 +21,15 @@ from hypothesis import strategies as st
 
 from asymptotics.materials import gamma_from_nu
 from numeric import flat_punch, friction_coefficient, power_law, stick_radius
-from numeric import _eigen_table
-from numeric.stability import HonestyCheck, SweepPoint, main, sweep
+from numeric.core import table_data
+from numeric.studies.stability import HonestyCheck, SweepPoint, main, sweep
 
 NU = st.floats(-0.5, 0.45)
 C = st.floats(0.05, 0.95)
 # strictly inside the table's c range: at c = C_MAX exactly the inversion's end test can fail by
 # rounding and stick_radius falls back to the solver (measured: c = 0.95 returns 0.95 + 4.0e-12,
 # within the level-2 solver's error but not the table's)
-C_TABLE = st.floats(_eigen_table.C_MIN * (1 + 1e-9), _eigen_table.C_MAX * (1 - 1e-9))
+C_TABLE = st.floats(table_data.C_MIN * (1 + 1e-9), table_data.C_MAX * (1 - 1e-9))
 NU_TABLE = st.floats(-0.5, 0.5, exclude_max=True)
 FAST = settings(max_examples=4)
 SLOW = settings(max_examples=40)
@@ -112,7 +112,7 @@ def _constraints_and_continuity(nu: float, c: float) -> None:
     # steadily with the level (measured: nu = 0, c = 0.0039: 5.8e-7 at level 1, 2.0e-6 at level 3;
     # nu = 0.47, c = 0.25: 9.2e-9, 1.1e-8), so no level-to-level rate is asserted. Tolerance:
     # 1e-3 p(c), the accuracy the solver itself accepts for mu p - q at the node next to c
-    # (numeric.eigen._admissible); measured worst 5e-5 p(c) at nu = -0.5, c = 0.85 (alpha = 0.23)
+    # (numeric.core.eigen._admissible); measured worst 5e-5 p(c) at nu = -0.5, c = 0.85 (alpha = 0.23)
     below = np.nextafter(c, 0.0)
     for f in (fine.pressure, fine.shear):
         jump = abs(float(f(below)) - float(f(c)))
@@ -225,7 +225,7 @@ def test_quick_report(tmp_path):
 
 @pytest.mark.slow  # the whole sweep of derivations/stability.md: ~30 s CPU
 def test_full_sweep_has_no_silent_failures():
-    from numeric.stability import FULL_GRID
+    from numeric.studies.stability import FULL_GRID
 
     nus, mus, cs = FULL_GRID
     points = sweep(nus, mus, cs, power_law_nus=(-0.99, 0.0, 0.4999), power_law_mus=(1e-4, 0.1, 1.0, 1e4))

@@ -280,7 +280,7 @@ def _d313() -> Derivation:
         agrees=bool(simplify(exact) == 0 and check == 0 and boundary == 0 and printed.rhs == solution),
         steps=steps,
         note=("The general solution adds K x^(n-1), excluded by p(1) = 0. App. B's reference (1.23) means "
-              "(3.13) (errata). Numerical evaluation for a computed flat punch: numeric.power_law."),
+              "(3.13) (errata). Numerical evaluation for a computed flat punch: numeric.solutions.power_law."),
     )
 
 
@@ -400,7 +400,7 @@ def _d316() -> tuple[Derivation, Derivation]:
         identities=(_elliptic_kernel_identity(), _a316_frictionless_identity(), _euler_beta_identity()),
         note=("Correct as printed, with or without friction: the gamma terms cancel for every q. K(t) is "
               "the complete elliptic integral of modulus t (parameter m = t^2). For a computed flat punch "
-              "see numeric.power_law.indentation_constant_316."),
+              "see numeric.solutions.power_law.indentation_constant_316."),
     )
     # Companion: (3.5a) at x = 1, where the L11 term vanishes.
     edge_steps = [Step("(3.5a) at x = 1: int_1^1 ... = 0, the gamma terms give",

@@ -70,8 +70,8 @@ from scipy import special
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_n, check_x
 
-from .discretize import LEVELS
-from .flat_punch import LEVEL_TYPICAL_ERROR, flat_punch
+from numeric.core.mesh import LEVELS
+from numeric.solutions.flat_punch import LEVEL_TYPICAL_ERROR, flat_punch
 
 __all__ = [
     "PowerLawSolution",
@@ -98,7 +98,7 @@ _SERIES_TERMS = 30  # terms of the small-s series of W_n (0.25^30 < 1e-18)
 class FlatStresses(Protocol):
     """What the power-law transformation needs from a flat-punch solution ([S75] §2).
 
-    ``numeric.flat_punch.FlatPunchSolution`` satisfies it; so does any object with
+    ``numeric.FlatPunchSolution`` satisfies it; so does any object with
     these attributes. p0 and q0 must be smooth (analytic) inside each breakpoint
     interval; the breakpoints are graded geometrically toward c and 1.
     """

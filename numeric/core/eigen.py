@@ -36,7 +36,7 @@ import scipy.linalg as sla
 from asymptotics.arrays import read_only
 from asymptotics.first_order import mu_over_gamma
 
-from .discretize import (
+from numeric.core.mesh import (
     Discretisation,
     Elements,
     Resolution,

@@ -3,7 +3,7 @@
 Method, and why: piecewise polynomials in u = t^2 on an hp mesh graded geometrically
 toward the stick-slip boundary and the edge, collocation of (2.2) with every Abel integral
 done exactly, and the eigenvalue condition phi(c-) = 0 solved by a Krylov model of the
-linear system (``numeric.discretize``, ``numeric.eigen``). The solution has power-type
+linear system (``numeric.core.mesh``, ``numeric.core.eigen``). The solution has power-type
 singularities at x = c and x = 1 whose exponents depend on mu (tan pi alpha = mu gamma),
 so a fixed singular basis would have to change during the eigenvalue iteration; geometric
 grading with low degree near those points and high degree away from them resolves any
@@ -23,7 +23,7 @@ third level is solved and the larger difference is reported if they do not shrin
 Routes (``route`` of the result names the one taken): closed forms in the limits; the solver;
 the asymptotic law mu/gamma = f0(c) (2.28) or f0 + gamma^2 f2 (``asymptotics.second_order``)
 below c = 1e-5, where the solver does not converge, and wherever ``rtol`` allows it
-(c <= 0.9), with error bounds measured against the solver (``numeric.asymptotic_law.K2_BOUNDS``, ``K4_BOUNDS``,
+(c <= 0.9), with error bounds measured against the solver (``numeric.solutions.law.K2_BOUNDS``, ``K4_BOUNDS``,
 ``KP2_BOUND``, ``KP4_BOUND``; first-order stresses, O(gamma^2)); a bracket for given mu
 beyond what the solver reaches near the largest stick radius c_max = 1 - 8 exp(-pi/kappa).
 ``rtol`` takes the cheapest route that meets it and warns (``AccuracyWarning``) where none does.
@@ -54,11 +54,11 @@ from asymptotics.arrays import scalar_or_array
 from asymptotics.first_order import frictionless_pressure, mu_over_gamma
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, kappa_from_gamma, resolve_gamma
 
-from .asymptotic_law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,
-                             law_bound, law_bracket, law_compliance, route_text)
-from .discretize import LEVELS
-from .eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
-from .eigen_table import table_available, table_friction_coefficient, table_stick_radius
+from numeric.core.eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
+from numeric.core.mesh import LEVELS
+from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
+from numeric.solutions.law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,
+                                   law_bound, law_bracket, law_compliance, route_text)
 
 __all__ = ["AccuracyWarning", "FlatPunchSolution", "flat_punch", "stick_radius", "friction_coefficient", "NoEigenvalueError",
            "SolverError"]
@@ -230,16 +230,16 @@ def _no_eigenvalue(c: float, gamma: float, detail: str = "") -> NoEigenvalueErro
 # Reach of the solver and accuracy of its levels
 
 #: Smallest stick radius at which each level's eigenvalue iteration converges. Measured with
-#: ``numeric.eigen.solve_mu`` at gamma = 0.1, 0.3, 0.5, 0.75: level 1 converged at 2e-6 and 5e-6;
+#: ``numeric.core.eigen.solve_mu`` at gamma = 0.1, 0.3, 0.5, 0.75: level 1 converged at 2e-6 and 5e-6;
 #: level 2 failed at 2e-5 (gamma = 0.3) and 3e-5 (0.1, 0.3), converged at 5e-5; level 3 failed at
 #: 2e-4, 3e-4, converged at 5e-4; level 4 failed at 1e-3 ... 5e-3, converged at 1e-2. A failing
 #: iteration spends 5-25 s before SolverError, so a level is not tried below its floor.
 LEVEL_C_MIN = {1: 5e-6, 2: 5e-5, 3: 5e-4, 4: 1e-2}
 #: Below this stick radius the asymptotic law replaces the solver (twice level 1's floor).
 C_ASYMPTOTIC = 1e-5
-#: Typical relative accuracy of each level (numeric.discretize.LEVELS); rtol picks the first that meets it.
+#: Typical relative accuracy of each level (numeric.core.mesh.LEVELS); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {1: 1e-8, 2: 1e-10, 3: 1e-12}
-#: Relative error of mu from the Chebyshev table (numeric.eigen_table): MU_RELATIVE_ERROR = 5.2e-11, the
+#: Relative error of mu from the Chebyshev table (numeric.core.table): MU_RELATIVE_ERROR = 5.2e-11, the
 #: worst of its build checks (at the corner c = 0.95, gamma = 2/3); about twice that.
 TABLE_MU_RTOL = 1e-10
 
@@ -348,7 +348,7 @@ def _table_start(mu: float, gamma: float) -> tuple[float, float] | None:
 def _invert(mu: float, gamma: float, level: int, c_guess: float) -> tuple[FlatField, float]:
     """The fine solution with mu_c(c) = mu and the error of its c.
 
-    The start is the Chebyshev table's c (``numeric.eigen_table``) or, outside the table,
+    The start is the Chebyshev table's c (``numeric.core.table``) or, outside the table,
     Brent on the coarse level from ``c_guess`` (the asymptotic law), up to ``_c_search_top``.
     Then secant steps in logit(c) on the fine level until the
     fine mu matches to 1e-11 relative (usually 1-2 solves, the start being that close), c
@@ -445,14 +445,14 @@ def flat_punch(
     gamma : float, optional
         Coupling constant (2.2) instead of ``nu``.
     level : int, optional
-        Resolution level 1..4 of ``numeric.discretize.LEVELS`` (the next coarser one gives
+        Resolution level 1..4 of ``numeric.core.mesh.LEVELS`` (the next coarser one gives
         the error estimate); 2 (the default) reaches ~1e-10. Not together with ``rtol``.
     rtol : float, optional
         Relative accuracy wanted in the returned c (given mu) or mu (given c): the cheapest
         route whose error meets ``error <= rtol * value`` is taken. A closed form in the
         limits; else the asymptotic law for c <= 0.9 (first order (2.28) where its measured
         bound K2(gamma) gamma^2 meets rtol, else second order (2.28) + gamma^2 f2 where
-        K4(gamma) gamma^4 does; ``numeric.asymptotic_law.K2_BOUNDS``, ``K4_BOUNDS``); else the solver at the first
+        K4(gamma) gamma^4 does; ``numeric.solutions.law.K2_BOUNDS``, ``K4_BOUNDS``); else the solver at the first
         level whose typical accuracy meets rtol (1: 1e-8, 2: 1e-10, 3: 1e-12, else 4), and
         finer levels while its ``error`` exceeds ``rtol * value``. If no route meets rtol,
         the most accurate result is returned with an ``AccuracyWarning``.
@@ -757,9 +757,9 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level:
                  progress: bool = False) -> np.ndarray | float:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
 
-    Inside the table's domain (``numeric.eigen_table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
+    Inside the table's domain (``numeric.core.table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
     comes from the Chebyshev table of the eigenvalue relation (microseconds a point, error
-    ``numeric._eigen_table.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
+    ``numeric.core.table_data.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
     ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
     ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
     with a progress line on stderr when ``progress`` is true.

@@ -10,14 +10,14 @@ Three studies of the high-accuracy solver ([S75] §2, ``numeric.flat_punch``):
    sample with the finest level (``LEVELS[4]``): |value - reference| <= error must hold.
 2. ``plateau_study``, ``adhesive_plateau``: the error of mu and P* (2.4) as the resolution
    grows past convergence, with the condition number of the collocation matrix
-   D(mu) = D0 + mu D1 of ``numeric.eigen`` (raw and after the row/column equilibration the
+   D(mu) = D0 + mu D1 of ``numeric.core.eigen`` (raw and after the row/column equilibration the
    solver factors); at c = 1 the reference is the exact P0* = atanh(gamma)/gamma (B4).
 3. ``mpmath_crosscheck``: the level-0 system D(mu) z = b solved in mpmath at 30 digits
    (same double matrix, so the difference is the round-off of the double solve) and one
    Newton step of the eigenvalue condition phi(c-) = mu p(c-) - q(c-) = 0 (2.11) in mpmath;
    ``adhesive_mp_check``: the adhesive solution (c = 1) against (B3), (B4), (4.10) at 30 digits.
 
-Run ``python -m numeric.stability [--quick]``; it writes ``derivations/stability.md``
+Run ``python -m numeric.studies.stability [--quick]``; it writes ``derivations/stability.md``
 (full run measured at 442 s of CPU, 16 min wall on the shared 2-core machine; ``--quick`` ~3 s of CPU).
 The hand-over to asymptotic forms where c or 1 - c is exponentially small (2.29) is not
 part of this module.
@@ -45,11 +45,11 @@ from scipy.sparse.linalg import LinearOperator, onenormest
 from asymptotics.adhesive import central_pressure_adhesive, pressure_adhesive_mp, shear_adhesive_mp
 from asymptotics.materials import gamma_from_nu
 
-from . import _eigen_table
-from .discretize import LEVELS, Resolution, adhesive_discretisation, discretise
-from .eigen import NoEigenvalueError, SolverError, _end_value_row, _system, solve_adhesive, solve_mu
-from .flat_punch import flat_punch, friction_coefficient, stick_radius
-from .power_law import power_law
+from numeric.core import table_data
+from numeric.core.eigen import NoEigenvalueError, SolverError, _end_value_row, _system, solve_adhesive, solve_mu
+from numeric.core.mesh import LEVELS, Resolution, adhesive_discretisation, discretise
+from numeric.solutions.flat_punch import flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.power_law import power_law
 
 __all__ = [
     "SweepPoint",
@@ -265,7 +265,7 @@ def _table_c_bound(c: float, gamma: float) -> float:
     """Error bound on a tabulated c: the recorded relative error of mu over d(log mu)/dc."""
     h = 1e-5 * min(c, 1.0 - c)
     pair = np.asarray(friction_coefficient(np.array([c - h, c + h]), _nu_of_gamma(gamma)), dtype=float)
-    return _eigen_table.MU_RELATIVE_ERROR / abs(math.log(pair[1] / pair[0]) / (2 * h))
+    return table_data.MU_RELATIVE_ERROR / abs(math.log(pair[1] / pair[0]) / (2 * h))
 
 
 def _nu_of_gamma(gamma: float) -> float:
@@ -303,7 +303,7 @@ def check_honesty(points: Sequence[SweepPoint], *, max_checks: int | None = None
                                        ref.error))
         elif p.function == "friction_coefficient":
             checks.append(HonestyCheck(p.function, p.nu, p.argument, "mu", p.mu, ref.mu,
-                                       _eigen_table.MU_RELATIVE_ERROR * ref.mu, ref.error))
+                                       table_data.MU_RELATIVE_ERROR * ref.mu, ref.error))
         else:
             checks.append(HonestyCheck(p.function, p.nu, p.argument, "c", p.c, ref.c,
                                        _table_c_bound(p.c, p.gamma), ref.error))
@@ -312,12 +312,12 @@ def check_honesty(points: Sequence[SweepPoint], *, max_checks: int | None = None
 
 def _in_table(p: SweepPoint) -> bool:
     c = p.argument if p.function == "friction_coefficient" else p.c
-    return (_eigen_table.C_MIN <= c <= _eigen_table.C_MAX) and p.gamma <= _eigen_table.GAMMA_MAX
+    return (table_data.C_MIN <= c <= table_data.C_MAX) and p.gamma <= table_data.GAMMA_MAX
 
 
 # ----------------------------------------------------------------------------- plateau
 def _conditions(D: np.ndarray, exact: bool) -> tuple[float, float]:
-    """Condition of D and of its equilibrated form (as ``numeric.eigen._Factor`` scales it):
+    """Condition of D and of its equilibrated form (as ``numeric.core.eigen._Factor`` scales it):
     2-norm by SVD when ``exact``, else the 1-norm estimate of Hager-Higham."""
     cs = 1.0 / np.max(np.abs(D), axis=0)
     scaled = D * cs[None, :]
@@ -375,7 +375,7 @@ def plateau_study(c: float, nu: float, *, finest_level: int = 4, extra: bool = T
 
 
 def _adhesive_matrix(gamma: float, res: Resolution) -> np.ndarray:
-    """The c = 1 collocation matrix exactly as ``numeric.eigen.solve_adhesive`` builds it."""
+    """The c = 1 collocation matrix exactly as ``numeric.core.eigen.solve_adhesive`` builds it."""
     _, x, w, U, Lo = adhesive_discretisation(res)
     n = x.size
     D = np.zeros((2 * n, 2 * n))
@@ -413,7 +413,7 @@ def adhesive_plateau(gamma: float, *, finest_level: int = 4, extra: bool = True,
 def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> tuple[MpCheck, ...]:
     """The level-``level`` system D(mu) z = b at the double-precision root, solved in mpmath.
 
-    D, b are the double matrices of ``numeric.eigen._system``; mpmath solves them at ``dps``
+    D, b are the double matrices of ``numeric.core.eigen._system``; mpmath solves them at ``dps``
     digits, so the differences are the round-off of the double LU solve (the solver's own
     equilibrated LU) and of the eigenvalue iteration. One Newton step of
     F(mu) = mu p(c-) - c Q(c-) (2.11) in mpmath, with dz/dmu = -D^-1 D1 z, gives the root of
@@ -458,7 +458,7 @@ def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> 
 
 
 def _lu_solve_like_solver(D: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Solve as ``numeric.eigen._Factor`` does (column then row equilibration, partial pivoting)."""
+    """Solve as ``numeric.core.eigen._Factor`` does (column then row equilibration, partial pivoting)."""
     cs = 1.0 / np.max(np.abs(D), axis=0)
     scaled = D * cs[None, :]
     rs = 1.0 / np.max(np.abs(scaled), axis=1)
@@ -531,7 +531,7 @@ def _worst(points: Sequence[SweepPoint]) -> SweepPoint | None:
 def write_report(report: StabilityReport, path: Path) -> None:
     """Write the Markdown report (sweep summary, violations, plateau and mpmath tables)."""
     lines = ["# Numerical stability of the solver (issue 5, part 2)", "",
-             f"Generated by `python -m numeric.stability{' --quick' if report.quick else ''}`. "
+             f"Generated by `python -m numeric.studies.stability{' --quick' if report.quick else ''}`. "
              "Values: level 2 (the default) unless a route says otherwise; error = the returned estimate.", ""]
     pts = report.points
     lines += ["## Sweep summary", "", "| function | region | calls | ok | ValueError | SolverError | NoEigenvalueError | other | not admissible | max CPU s |",
@@ -569,7 +569,7 @@ def write_report(report: StabilityReport, path: Path) -> None:
     lines += ["", "## Honesty of the error estimate (reference: `flat_punch(..., level=4)`)", "",
               f"{len(h)} comparisons, {len(violations)} with |value - reference| > error. "
               "Bound = the returned `error` for `flat_punch`; for the table functions the recorded "
-              f"table error (relative {_eigen_table.MU_RELATIVE_ERROR:g} in mu, converted to c by d log mu / dc).", "",
+              f"table error (relative {table_data.MU_RELATIVE_ERROR:g} in mu, converted to c by d log mu / dc).", "",
               "| function | nu | mu or c | quantity | value | reference | abs difference | bound | ratio | reference's error |",
               "|---|---|---|---|---|---|---|---|---|---|"]
     for x in sorted(h, key=lambda x: -x.difference / max(x.bound, 1e-300)):
@@ -605,9 +605,9 @@ def write_report(report: StabilityReport, path: Path) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the studies and write the report; ``--quick`` for the small version."""
-    parser = argparse.ArgumentParser(prog="python -m numeric.stability", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m numeric.studies.stability", description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="small grid and coarse levels (a few seconds)")
-    parser.add_argument("--output", type=Path, default=Path(__file__).resolve().parents[1] / "derivations" / "stability.md")
+    parser.add_argument("--output", type=Path, default=Path(__file__).resolve().parents[2] / "derivations" / "stability.md")
     args = parser.parse_args(argv)
     report = run(quick=args.quick)
     write_report(report, args.output)

@@ -22,7 +22,7 @@ generated table exists (its quadratures take seconds a point); until then they a
 deterministic Markdown (fixed formats, errors to 2 significant digits, rows sorted, no
 timestamps) for ``derivations/section_2_3.md``; ``expansion_errors`` and
 ``plot_expansion_errors`` give the log-log figure "error against gamma". ``fast=True`` uses
-the Chebyshev table (``numeric.eigen_table``, mu to 7e-12 relative, P* to 5e-14) for mu and
+the Chebyshev table (``numeric.core.table``, mu to 7e-12 relative, P* to 5e-14) for mu and
 P*, level-2 solutions for the stresses and no solves near c_max (seconds); ``fast=False``
 solves everything at level 3 (1e-11) and adds c = 1e-4, 1 - c down to 1e-6 and the c_max
 study (minutes).
@@ -53,8 +53,8 @@ from asymptotics.first_order import (
 from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import compliance_second_order, mu_over_gamma_second_order
 
-from .eigen_table import table_compliance
-from .flat_punch import FlatPunchSolution, flat_punch, friction_coefficient
+from numeric.core.table import table_compliance
+from numeric.solutions.flat_punch import FlatPunchSolution, flat_punch, friction_coefficient
 
 __all__ = [
     "NUS",

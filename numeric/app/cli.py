@@ -1,7 +1,7 @@
 """The ``hertz-friction`` command line.
 
 Subcommands: ``sphere``, ``punch``, ``cone``, ``power-law`` (a contact in SI units,
-``numeric.contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
+``numeric.app.contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
 ``figures``, ``bench`` and ``tables`` (the paper's tables). ``hertz-friction CMD --help``
 describes each.
 
@@ -111,7 +111,7 @@ def _build_parser() -> argparse.ArgumentParser:
     p.add_argument("--format", action="append", choices=("png", "svg", "pdf"), dest="formats",
                    help="file format, repeatable (default png)")
     p.add_argument("--only", action="append", metavar="NAME", dest="names",
-                   help="only this figure (a key of numeric.figures.FIGURES), repeatable")
+                   help="only this figure (a key of numeric.studies.figures.FIGURES), repeatable")
 
     commands.add_parser("bench", help="the benchmark (arguments are passed on; bench --help for its own)",
                         add_help=False)
@@ -122,7 +122,7 @@ def _build_parser() -> argparse.ArgumentParser:
 
 
 def _elastic_bodies(args):
-    from .contact import elastic
+    from numeric.app.contact import elastic
 
     half = elastic(E=args.E, G=args.G, nu=args.nu)
     if args.indenter_E is None and args.indenter_G is None:
@@ -135,7 +135,7 @@ def _elastic_bodies(args):
 
 
 def _shape(args):
-    from .contact import FlatPunch, PowerLaw
+    from numeric.app.contact import FlatPunch, PowerLaw
 
     if args.command == "sphere":
         return PowerLaw.sphere(args.radius)
@@ -149,7 +149,7 @@ def _shape(args):
 
 
 def _run_physical(args) -> int:
-    from .contact import indent
+    from numeric.app.contact import indent
 
     half, indenter = _elastic_bodies(args)
     contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
@@ -203,7 +203,7 @@ def _describe(s) -> str:
 
 
 def _run_solve(args) -> int:
-    from . import flat_punch, power_law
+    from numeric import flat_punch, power_law
 
     if args.n is None:
         sol, law = flat_punch(nu=args.nu, gamma=args.gamma, mu=args.mu, c=args.c, level=args.level), None
@@ -252,7 +252,7 @@ def _parse_range(text: str, name: str) -> list[float]:
 def _run_table(args) -> int:
     from asymptotics.materials import check_mu, check_nu
 
-    from . import NoEigenvalueError, SolverError, flat_punch, power_law
+    from numeric import NoEigenvalueError, SolverError, flat_punch, power_law
 
     mus = _parse_range(args.mu, "mu")
     nus = _parse_range(args.nu, "nu")
@@ -313,7 +313,7 @@ def _format_rows(rows: list[dict], fmt: str) -> str:
 
 
 def _run_figures(args) -> int:
-    from .figures import write_figures
+    from numeric.studies.figures import write_figures
 
     paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names)
     for path in paths:
@@ -326,7 +326,7 @@ def _run_derivations(argv: list[str]) -> int:
     import runpy
     from pathlib import Path
 
-    script = Path(__file__).resolve().parents[1] / "derivations" / "regenerate.py"
+    script = Path(__file__).resolve().parents[2] / "derivations" / "regenerate.py"
     if not script.exists():
         sys.stderr.write("hertz-friction derivations: error: needs a source checkout installed with pip install -e "
                          f"(no {script})\n")
@@ -339,13 +339,13 @@ def _run_derivations(argv: list[str]) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hertz-friction`` console script; returns the exit code."""
-    from .eigen import NoEigenvalueError, SolverError
+    from numeric import NoEigenvalueError, SolverError
 
     argv = list(sys.argv[1:] if argv is None else argv)
     if argv[:1] == ["derivations"]:  # the repository's generator, with its own arguments
         return _run_derivations(argv[1:])
     if argv[:1] == ["bench"]:  # everything after "bench" belongs to the benchmark's own parser
-        from .bench import main as bench_main
+        from numeric.studies.bench import main as bench_main
 
         try:
             return bench_main(argv[1:])
@@ -357,7 +357,7 @@ def main(argv: list[str] | None = None) -> int:
     except SystemExit as exc:  # --help (0) or a usage error (2); argparse has printed the message
         return exc.code if isinstance(exc.code, int) else 2
     if args.command == "tables":
-        from .paper_tables import render
+        from numeric.studies.paper_tables import render
 
         sys.stdout.write(render() + "\n")
         return 0

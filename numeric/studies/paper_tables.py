@@ -1,6 +1,6 @@
 """The tables of [S75] §4 and §4.2, recomputed with the paper's scheme beside the exact values.
 
-Each table lists the paper's printed number, ours (``numeric.spence1975`` on the paper's
+Each table lists the paper's printed number, ours (``numeric.baseline.scheme`` on the paper's
 mesh), the exact value where a closed form exists (Appendix B, (4.18)) and the errors.
 The printed numbers are transcribed from ``shared/spec/spence1975.md`` with the layout of
 the last table taken from errata item 3; they are data to compare with, never inputs.
@@ -27,7 +27,7 @@ from asymptotics.adhesive import (
 )
 from asymptotics.materials import gamma_from_nu
 
-from .spence1975 import paper_mesh, solve_adhesive, solve_friction, sphere_from_flat
+from numeric.baseline.scheme import paper_mesh, solve_adhesive, solve_friction, sphere_from_flat
 
 __all__ = ["PAPER", "render"]
 

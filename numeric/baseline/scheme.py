@@ -5,7 +5,7 @@ Method ([S75] §4, §4.1, §4.2)
 * p(t) and t^-1 q(t) are piecewise constant on N intervals h_j = (t_{j-1}, t_j) of (0, 1)
   (4.1); the stick radius is a node, c = t_M (4.2).
 * (2.2) is collocated at the midpoints x_i with the Abel integrals done exactly
-  (``numeric.abel``), giving the partitioned system (4.3).
+  (``numeric.baseline.abel``), giving the partitioned system (4.3).
 * In the slip annulus q = mu p (4.5) eliminates the shear unknowns j > M; the remaining
   N + M unknowns solve D p = e (4.6), (4.8). D is derived here from (4.3) and (4.5) (the
   transcript of (4.7) has lost signs): with L the 2N x 2N matrix of (4.3),
@@ -54,7 +54,7 @@ from asymptotics.arrays import read_only
 from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import check_c, resolve_gamma
 
-from .abel import lower_abel_weights, upper_abel_weights
+from numeric.baseline.abel import lower_abel_weights, upper_abel_weights
 
 __all__ = [
     "Mesh",

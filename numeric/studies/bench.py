@@ -3,17 +3,17 @@
 Measures, for the cases nu in {0, 0.25, 0.45} x c in {0.1, 0.5, 0.9} plus the fully
 adhesive case c = 1 for each nu, every method at every resolution it offers:
 
-* the paper's scheme ``numeric.spence1975`` ([S75] §4): ``solve_friction`` on the friction
+* the paper's scheme ``numeric.baseline.scheme`` ([S75] §4): ``solve_friction`` on the friction
   mesh of §4.1 with coarse width h = 0.04 ... 0.0025 (N ~ 30 ... 460 intervals; h = 0.02 is
   the paper's), ``solve_adhesive`` on uniform meshes N = 25 ... 800 (N = 50 is the paper's
   mesh (ii)) and on the graded meshes (iii), (iv); the sphere's A by ``sphere_from_flat``
   ((4.13)-(4.17));
 * our solver ``numeric.flat_punch`` at levels 1-4 (mu, P*, p(0) for given c; c for given
-  mu), at c = 1 the discrete adhesive solver ``numeric.eigen.solve_adhesive`` (``flat_punch``
+  mu), at c = 1 the discrete adhesive solver ``numeric.core.eigen.solve_adhesive`` (``flat_punch``
   itself returns the closed form there, also listed); A by ``indentation_constant`` on the
   flat solution (what ``power_law(2, ...).A`` computes);
 * the Chebyshev table route (``friction_coefficient``, ``stick_radius``,
-  ``numeric.eigen_table.table_compliance``);
+  ``numeric.core.table.table_compliance``);
 * the asymptotic formulas of ``asymptotics.first_order``: (2.28) and its inverse, the
   first-order compliance (2.34), the first-order central pressure (2.32)-(2.33), (2.36) at
   c = 1, and the second-order law of ``asymptotics.second_order`` where that module exists.
@@ -33,8 +33,8 @@ timed run, so its run time is that of a case not solved before, as it is for our
 whose caches (reference meshes and Abel blocks per level, Gauss rules, the table) do not
 depend on c or gamma.
 
-    python -m numeric.bench            # writes derivations/benchmark.md and .png (minutes)
-    python -m numeric.bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
+    python -m numeric.studies.bench            # writes derivations/benchmark.md and .png (minutes)
+    python -m numeric.studies.bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
 
 On a shared machine set ``OPENBLAS_NUM_THREADS=1``: threaded BLAS under load was measured
 3-6 times slower.
@@ -64,11 +64,12 @@ from asymptotics import first_order
 from asymptotics.adhesive import central_pressure_adhesive, compliance_adhesive, sphere_A_adhesive
 from asymptotics.materials import gamma_from_nu
 
-from . import eigen, spence1975
-from .discretize import LEVELS
-from .eigen_table import table_compliance
-from .flat_punch import flat_punch, friction_coefficient, stick_radius
-from .power_law import indentation_constant, power_law
+from numeric.baseline import scheme
+from numeric.core import eigen
+from numeric.core.mesh import LEVELS
+from numeric.core.table import table_compliance
+from numeric.solutions.flat_punch import flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.power_law import indentation_constant, power_law
 
 __all__ = [
     "Case",
@@ -366,28 +367,28 @@ def _scheme_tol(h: float) -> float:
 
 
 def _measure_scheme(case: Case, ref: Reference, config: Config) -> list[Row]:
-    clear = spence1975._collocation_matrix.cache_clear  # per (mesh, gamma), i.e. per case: a new case builds it
+    clear = scheme._collocation_matrix.cache_clear  # per (mesh, gamma), i.e. per case: a new case builds it
     rows = []
 
     def add(method: str, resolution: str, call, rank: float, published: bool) -> None:
         sol, t = _timed(call, config, clear)
-        _, t_sphere = _timed(lambda: spence1975.sphere_from_flat(sol), config)
+        _, t_sphere = _timed(lambda: scheme.sphere_from_flat(sol), config)
         values = {"P*": (sol.compliance, t), "p(0)": (sol.central_pressure, t),
-                  "A": (spence1975.sphere_from_flat(sol).A, t + t_sphere)}
+                  "A": (scheme.sphere_from_flat(sol).A, t + t_sphere)}
         if not case.adhesive:
             values = {"mu": (sol.mu, t), **values}
         rows.extend(_rows(case, ref, method, resolution, sol.mesh.size, rank, values, published))
 
     if case.adhesive:
         for n in config.scheme_n:
-            add(SCHEME, f"N = {n}", lambda n=n: spence1975.solve_adhesive(spence1975.uniform_mesh(n), case.nu), n, n == PUBLISHED_N)
+            add(SCHEME, f"N = {n}", lambda n=n: scheme.solve_adhesive(scheme.uniform_mesh(n), case.nu), n, n == PUBLISHED_N)
         for label in config.graded_meshes:
-            mesh = spence1975.paper_mesh(label)
-            add(SCHEME_GRADED, f"mesh ({label}), N = {mesh.size}", lambda mesh=mesh: spence1975.solve_adhesive(mesh, case.nu),
+            mesh = scheme.paper_mesh(label)
+            add(SCHEME_GRADED, f"mesh ({label}), N = {mesh.size}", lambda mesh=mesh: scheme.solve_adhesive(mesh, case.nu),
                 mesh.size, False)
     else:
         for h in config.scheme_h:
-            add(SCHEME, f"h = {h:g}", lambda h=h: spence1975.solve_friction(case.c, case.nu, h=h, tol=_scheme_tol(h)), 1.0 / h,
+            add(SCHEME, f"h = {h:g}", lambda h=h: scheme.solve_friction(case.c, case.nu, h=h, tol=_scheme_tol(h)), 1.0 / h,
                 h == PUBLISHED_H)
     return rows
 
@@ -486,7 +487,7 @@ def _measure_setup(config: Config) -> list[Setup]:
     if frictional is not None:
         nu, c = frictional.nu, frictional.c
         if "scheme" in config.methods:
-            calls += [(frictional, SCHEME, f"h = {h:g}", lambda h=h: spence1975.solve_friction(c, nu, h=h, tol=_scheme_tol(h)))
+            calls += [(frictional, SCHEME, f"h = {h:g}", lambda h=h: scheme.solve_friction(c, nu, h=h, tol=_scheme_tol(h)))
                       for h in config.scheme_h]
         if "solver" in config.methods:
             calls += [(frictional, SOLVER, f"level {lv}", lambda lv=lv: flat_punch(nu=nu, c=c, level=lv))
@@ -496,7 +497,7 @@ def _measure_setup(config: Config) -> list[Setup]:
     if adhesive is not None:
         nu, g = adhesive.nu, adhesive.gamma
         if "scheme" in config.methods:
-            calls += [(adhesive, SCHEME, f"N = {n}", lambda n=n: spence1975.solve_adhesive(spence1975.uniform_mesh(n), nu))
+            calls += [(adhesive, SCHEME, f"N = {n}", lambda n=n: scheme.solve_adhesive(scheme.uniform_mesh(n), nu))
                       for n in config.scheme_n]
         if "solver" in config.methods:
             calls += [(adhesive, SOLVER, f"level {lv}", lambda lv=lv: eigen.solve_adhesive(g, LEVELS[lv]))
@@ -689,15 +690,15 @@ def render(bench: Benchmark) -> str:
     lines = [
         "# Run time against error: the paper's scheme, our solver, the table and the asymptotics",
         "",
-        "Generated by `python -m numeric.bench` (`hertz-friction bench`); see the module docstring of",
-        "`numeric/bench.py` for what is measured and how. Timings depend on the machine and its load and",
+        "Generated by `python -m numeric.studies.bench` (`hertz-friction bench`); see the module docstring of",
+        "`numeric/studies/bench.py` for what is measured and how. Timings depend on the machine and its load and",
         "differ between runs: this file is a record, not compared by the tests.",
         "",
         f"Machine: {m.get('cores')} cores, OPENBLAS_NUM_THREADS={m.get('blas_threads')}, load average "
         f"{m.get('load', float('nan')):.1f} when the run ended (the machine was shared with other jobs). "
         f"Full run: {bench.seconds:.0f} s.",
         "",
-        "On a shared machine run it as `OPENBLAS_NUM_THREADS=1 python -m numeric.bench`: with the default",
+        "On a shared machine run it as `OPENBLAS_NUM_THREADS=1 python -m numeric.studies.bench`: with the default",
         "threaded BLAS on the loaded 2-core machine one level-1 solve was measured at 0.48 s against",
         "0.076 s single-threaded (level 4: 2.1 s against 0.77 s).",
         "",
@@ -720,7 +721,7 @@ def render(bench: Benchmark) -> str:
         "- c = 1 (fully adhesive): the closed forms of App. B, P0* = atanh(gamma)/gamma (B4),",
         "  p0(0) = (kappa/gamma) cosh(pi kappa/2) (4.10), A from Psi1 (4.18) (`asymptotics.adhesive`,",
         "  checked there against mpmath at 30 digits).",
-        "- 0 < c < 1: our solver at its finest level 4 (`numeric.discretize.LEVELS[4]`); A by",
+        "- 0 < c < 1: our solver at its finest level 4 (`numeric.core.mesh.LEVELS[4]`); A by",
         "  `indentation_constant` on the level-4 flat solution. Its error is bounded by its distance to",
         "  level 3 (column `|L4 - L3|`: the levels converge exponentially) and it is cross-checked",
         "  against a different discretisation, the paper's piecewise-constant scheme Aitken-extrapolated",
@@ -755,11 +756,11 @@ def render(bench: Benchmark) -> str:
             "",
             "First call with every `functools` cache of `numeric` and `asymptotics` cleared (`clear_caches`),",
             "against the median of later calls of the same case. What is cached: per resolution level the",
-            "reference meshes and their stick-stick and slip-slip Abel blocks (`numeric.discretize._reference`,",
+            "reference meshes and their stick-stick and slip-slip Abel blocks (`numeric.core.mesh._reference`,",
             "c-independent: the blocks for a given c are these times c or sqrt(1 - c^2); only the two cross",
             "blocks are computed per call) and the adhesive mesh and blocks (`adhesive_discretisation`), the",
-            "Gauss rules, the Chebyshev table (`numeric.eigen_table._data`), and for the paper's scheme the",
-            "collocation matrix L of (4.3) per (mesh, gamma) (`numeric.spence1975._collocation_matrix`), i.e.",
+            "Gauss rules, the Chebyshev table (`numeric.core.table._data`), and for the paper's scheme the",
+            "collocation matrix L of (4.3) per (mesh, gamma) (`numeric.scheme._collocation_matrix`), i.e.",
             "per case. Our level L also solves level L - 1 for its error estimate, so its first call builds",
             "both levels. The medians in the tables below are for a new case: for the paper's scheme with its",
             "per-case matrix cache cleared before each run (the repeat column here keeps it).",
@@ -780,7 +781,7 @@ def render(bench: Benchmark) -> str:
         "1e-5 (h/0.02)^3: the paper's 1e-5 at h = 0.02); at c = 1 uniform meshes of N intervals and the",
         "graded meshes (iii), (iv) of §4. Our solver: `flat_punch(nu=, c=, level=L)` (`mu=` for c),",
         "including the coarser level its error estimate solves; at c = 1 the discrete adhesive solver",
-        "`numeric.eigen.solve_adhesive` (`flat_punch(c=1)` returns the closed form, listed separately:",
+        "`numeric.core.eigen.solve_adhesive` (`flat_punch(c=1)` returns the closed form, listed separately:",
         "for P* and p(0) it is the reference itself; A is its quadrature (3.13) of (B3)). Asymptotic",
         "formulas: (2.28) for mu and, inverted, for c; (2.34) with the first-order shear for P*;",
         "p(0) = 2/pi + gamma^2 P1(0; c) by (2.32)-(2.33); (2.36) at c = 1.",
@@ -854,7 +855,7 @@ def plot(bench: Benchmark, path: Path) -> None:
 
 def _default_output() -> Path | None:
     """``derivations/`` of the source tree (editable install), else None."""
-    candidate = Path(__file__).resolve().parents[1] / "derivations"
+    candidate = Path(__file__).resolve().parents[2] / "derivations"
     return candidate if candidate.is_dir() else None
 
 

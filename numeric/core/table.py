@@ -2,7 +2,7 @@
 
 For sweeps and for ``stick_radius`` the full solver (tens of ms a point, several points for
 the inverse) is replaced by a two-dimensional Chebyshev interpolant built once from
-level-3 solutions (``derivations/build_eigen_table.py`` writes ``numeric/_eigen_table.py``):
+level-3 solutions (``derivations/build_eigen_table.py`` writes ``numeric/core/table_data.py``):
 in xi = logit(c) on [C_MIN, C_MAX] and eta = gamma^2 on [0, GAMMA_MAX^2] it interpolates
 
     log( mu / (gamma f0(c)) ),   f0(c) = atanh(c) / (c K'(c))   (2.28),
@@ -34,7 +34,7 @@ __all__ = ["table_available", "in_domain", "table_friction_coefficient", "table_
 
 @lru_cache(maxsize=1)
 def _data():
-    from . import _eigen_table as data  # generated; imported on first use only
+    from numeric.core import table_data as data  # generated; imported on first use only
 
     return (np.array(data.LOG_RATIO_COEFFICIENTS), np.array(data.COMPLIANCE_COEFFICIENTS), data)
 

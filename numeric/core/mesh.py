@@ -39,6 +39,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from numeric.core.quadrature import gauss_rule, legendre_values, padded_inverse_vandermonde
+
 __all__ = ["Resolution", "LEVELS", "Elements", "Discretisation", "discretise", "adhesive_discretisation", "abel_matrices"]
 
 _FAR_DIGITS = 40.0  # log(1e17): a far pair's Gauss rule is exact to 1e-17 relative
@@ -77,33 +79,6 @@ LEVELS: tuple[Resolution, ...] = (
     Resolution(sigma=0.18, layers_c=20, layers_edge=26, kmax=26, slope=1.5, layers_adhesive=40, kmax_adhesive=36,
                slope_adhesive=2.0),
 )
-
-
-@lru_cache(maxsize=None)
-def gauss_rule(k: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(k+1)-point Gauss-Legendre nodes, weights on [-1, 1] and the inverse Legendre-Vandermonde."""
-    x, w = np.polynomial.legendre.leggauss(k + 1)
-    return x, w, np.linalg.inv(np.polynomial.legendre.legvander(x, k))
-
-
-@lru_cache(maxsize=None)
-def _padded_inverse_vandermonde(kmax: int) -> np.ndarray:
-    """Inverse Vandermonde of every degree k <= kmax, zero-padded: [k, legendre, node]."""
-    out = np.zeros((kmax + 1, kmax + 1, kmax + 1))
-    for k in range(kmax + 1):
-        out[k, : k + 1, : k + 1] = gauss_rule(k)[2]
-    return out
-
-
-def legendre_values(xi: np.ndarray, k: int) -> np.ndarray:
-    """Legendre polynomials P_0..P_k at xi, stacked on the first axis (three-term recurrence)."""
-    out = np.empty((k + 1,) + np.shape(xi))
-    out[0] = 1.0
-    if k >= 1:
-        out[1] = xi
-    for n in range(1, k):
-        out[n + 1] = ((2 * n + 1) * xi * out[n] - n * out[n - 1]) / (n + 1)
-    return out
 
 
 @dataclass(frozen=True, slots=True)
@@ -186,7 +161,7 @@ def abel_matrices(el: Elements, anchor: np.ndarray, offset: np.ndarray, *, upper
     U = np.where(far_up[:, element_of], base, 0.0) if upper else None
     Lo = np.where(far_lo[:, element_of], base, 0.0) if lower else None
     xg, wg, _ = gauss_rule(kmax)
-    vinv = _padded_inverse_vandermonde(kmax)
+    vinv = padded_inverse_vandermonde(kmax)
     local = np.arange(kmax + 1)
 
     def near(rows: np.ndarray, elems: np.ndarray, is_upper: bool, out: np.ndarray) -> None:

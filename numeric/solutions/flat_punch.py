@@ -54,7 +54,8 @@ from asymptotics.arrays import scalar_or_array
 from asymptotics.first_order import frictionless_pressure, mu_over_gamma
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, kappa_from_gamma, resolve_gamma
 
-from numeric.core.eigen import FlatField, NoEigenvalueError, SolverError, solve_mu
+from numeric.core.collocation import FlatField
+from numeric.core.eigen import NoEigenvalueError, SolverError, solve_mu
 from numeric.core.mesh import LEVELS
 from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
 from numeric.solutions.law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,

@@ -29,8 +29,8 @@ C* = Gamma((n+3)/2) Gamma(1/2) / Gamma(1 + n/2) C.
 
 Numerical method
 ----------------
-All integrals are composite Gauss-Legendre (30 nodes) on the flat solution's
-breakpoints, with every piece [a, b], a > 0, split geometrically so that b <= 2a (this
+All integrals are composite Gauss-Legendre (30 nodes, ``numeric.core.quadrature``) on the
+flat solution's breakpoints, with every piece [a, b], a > 0, split geometrically so that b <= 2a (this
 resolves t^(-n) and keeps each piece well inside the region of analyticity). Values of
 int_x^1 t^(-n) f dt at many points are obtained at once: the points are merged into the
 breakpoints, every piece is integrated, and reverse cumulative sums are taken.
@@ -60,7 +60,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Protocol, runtime_checkable
 
 import numpy as np
@@ -71,6 +70,8 @@ from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_n, check_x
 
 from numeric.core.mesh import LEVELS
+from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
+                                     split_geometric)
 from numeric.solutions.flat_punch import LEVEL_TYPICAL_ERROR, flat_punch
 
 __all__ = [
@@ -90,7 +91,6 @@ __all__ = [
 EDGE_GAP = 1e-13
 """Smallest distance 1 - x at which the flat solution is sampled; beyond, the edge form is used."""
 
-_NODES = 30  # Gauss-Legendre nodes per piece
 _SERIES_TERMS = 30  # terms of the small-s series of W_n (0.25^30 < 1e-18)
 
 
@@ -112,95 +112,6 @@ class FlatStresses(Protocol):
     def pressure(self, x: np.ndarray) -> np.ndarray: ...  # p0(x), 0 <= x < 1
 
     def shear(self, x: np.ndarray) -> np.ndarray: ...  # q0(x), 0 <= x < 1
-
-
-# ----------------------------------------------------------------------------- rules
-@lru_cache(maxsize=1)
-def _legendre() -> tuple[np.ndarray, np.ndarray]:
-    return np.polynomial.legendre.leggauss(_NODES)
-
-
-def _gauss_rule(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Nodes and weights, shape (len(lo), _NODES), of Gauss-Legendre on each [lo, hi].
-
-    Pieces with lo >= 1/2 are mapped in s = 1 - t and get interpolatory weights for the
-    rounded nodes (see the module docstring), so that 1 - t is exact at every node.
-    """
-    xi, w = _legendre()
-    half = 0.5 * (hi - lo)
-    nodes = (0.5 * (hi + lo))[:, None] + half[:, None] * xi
-    weights = half[:, None] * w
-    near = lo >= 0.5
-    if np.any(near):
-        s_lo, s_hi = 1.0 - hi[near], 1.0 - lo[near]  # exact (Sterbenz)
-        hs, ms = 0.5 * (s_hi - s_lo), 0.5 * (s_hi + s_lo)
-        t = 1.0 - (ms[:, None] + hs[:, None] * xi)
-        s = 1.0 - t  # exact
-        hs_safe = np.where(hs > 0.0, hs, 1.0)
-        xi_true = np.clip((s - ms[:, None]) / hs_safe[:, None], -1.0, 1.0)
-        vander = np.polynomial.legendre.legvander(xi_true, _NODES - 1)  # (M, N, N)
-        rhs = np.zeros(_NODES)
-        rhs[0] = 2.0
-        # Rounded nodes of very short pieces may coincide; keep plain Gauss weights there.
-        distinct = np.all(np.diff(np.sort(xi_true, axis=1), axis=1) > 1e-3 / _NODES**2, axis=1)
-        w_true = np.broadcast_to(w, xi_true.shape).copy()
-        if np.any(distinct):
-            mats = np.swapaxes(vander[distinct], 1, 2)
-            w_true[distinct] = np.linalg.solve(mats, np.broadcast_to(rhs, (mats.shape[0], _NODES))[..., None])[..., 0]
-        nodes[near] = t
-        weights[near] = hs[:, None] * w_true
-    return nodes, weights
-
-
-def _integration_matrices(nodes: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """M with (M f)_i = int_{t_i}^{hi} of the interpolant of f at the nodes of each piece.
-
-    With xi the local coordinate, int_xi^1 P_k = (P_{k-1}(xi) - P_{k+1}(xi))/(2k + 1)
-    (k >= 1) and 1 - xi (k = 0); M = W V^-1 (times the half-length). Shape (pieces, N, N).
-    """
-    near = lo >= 0.5
-    xi = np.empty(nodes.shape)
-    half = 0.5 * (hi - lo)
-    half_safe = np.where(half > 0.0, half, 1.0)
-    xi[~near] = (nodes[~near] - (0.5 * (hi + lo))[~near, None]) / half_safe[~near, None]
-    s, s_lo, s_hi = 1.0 - nodes[near], 1.0 - hi[near], 1.0 - lo[near]
-    xi[near] = -(s - 0.5 * (s_hi + s_lo)[:, None]) / half_safe[near, None]
-    xi = np.clip(xi, -1.0, 1.0)
-    # rounded nodes of very short pieces may coincide (as in _gauss_rule): use the ideal ones there
-    distinct = np.all(np.diff(np.sort(xi, axis=1), axis=1) > 1e-3 / _NODES**2, axis=1)
-    xi[~distinct] = _legendre()[0]
-    vander = np.polynomial.legendre.legvander(xi, _NODES)  # P_0 .. P_N
-    k = np.arange(1, _NODES)
-    integ = np.empty(xi.shape + (_NODES,))
-    integ[..., 0] = 1.0 - xi
-    integ[..., 1:] = (vander[..., k - 1] - vander[..., k + 1]) / (2 * k + 1)
-    basis = vander[..., :_NODES]
-    # M = integ @ inv(basis)  ->  solve basis^T M^T = integ^T
-    mats = np.swapaxes(np.linalg.solve(np.swapaxes(basis, 1, 2), np.swapaxes(integ, 1, 2)), 1, 2)
-    return mats * half[:, None, None]
-
-
-def _split_geometric(knots: np.ndarray) -> np.ndarray:
-    """Insert points so that every piece [a, b] with a > 0 has b <= 2a (sorted, unique)."""
-    lo, hi = knots[:-1], knots[1:]
-    ratio = np.divide(hi, lo, out=np.ones_like(hi), where=lo > 0.0)
-    count = np.where(lo > 0.0, np.ceil(np.log2(np.maximum(ratio, 1.0)) - 1e-12), 1.0).astype(int)
-    count = np.maximum(count, 1)
-    if np.all(count == 1):
-        return knots
-    parts = [knots[:1]]
-    for a, b, k in zip(lo, hi, count):
-        if k == 1:
-            parts.append(np.array([b]))
-        else:
-            parts.append(a * (b / a) ** (np.arange(1, k + 1) / k))
-            parts[-1][-1] = b
-    return np.concatenate(parts)
-
-
-def _grade_to_zero(b1: float, levels: int = 64) -> np.ndarray:
-    """Knots b1 2^-levels, ..., b1/2 (for integrands like t^n at t = 0)."""
-    return b1 * 2.0 ** -np.arange(levels, 0, -1, dtype=float)
 
 
 # ------------------------------------------------------------------ flat solution
@@ -284,13 +195,13 @@ class _Flat:
         knots = np.union1d(self.knots, [e for e in extra if 0.0 < e < self.x_e])
         if grade_zero:
             levels = int(min(64, 500.0 / (n * math.log(2.0))))  # keep t^(-n) < 1e217
-            knots = np.union1d(knots, _grade_to_zero(float(knots[1]), levels))
-        return _split_geometric(knots)
+            knots = np.union1d(knots, grade_to_zero(float(knots[1]), levels))
+        return split_geometric(knots)
 
     def rule(self) -> tuple[np.ndarray, np.ndarray]:
         """Composite Gauss rule on [0, x_e]: flattened nodes and weights."""
         knots = self.rule_knots()
-        nodes, weights = _gauss_rule(knots[:-1], knots[1:])
+        nodes, weights = composite_rule(knots[:-1], knots[1:])
         return nodes.ravel(), weights.ravel()
 
     def tail_integrals(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -299,7 +210,7 @@ class _Flat:
 
     def _piece_sums(self, lo: np.ndarray, hi: np.ndarray, n: float):
         """Gauss rule on pieces, p0 and q0 at the nodes and int over each piece of t^(-n) f."""
-        nodes, weights = _gauss_rule(lo, hi)
+        nodes, weights = composite_rule(lo, hi)
         flat_nodes = nodes.ravel()
         p0 = np.asarray(self.flat.pressure(flat_nodes), float).reshape(nodes.shape)
         q0 = np.asarray(self.flat.shear(flat_nodes), float).reshape(nodes.shape)
@@ -329,9 +240,9 @@ class _Flat:
         inside = ~edge
         if np.any(inside):
             pts, inverse = np.unique(x[inside], return_inverse=True)
-            knots = _split_geometric(np.union1d(pts, self.knots[self.knots > pts[0]]))
+            knots = split_geometric(np.union1d(pts, self.knots[self.knots > pts[0]]))
             lo, hi = knots[:-1], knots[1:]
-            nodes, weights = _gauss_rule(lo, hi)
+            nodes, weights = composite_rule(lo, hi)
             flat_nodes = nodes.ravel()
             scale = weights * (lo[:, None] / nodes) ** n
             piece_p = (scale * np.asarray(self.flat.pressure(flat_nodes), float).reshape(nodes.shape)).sum(axis=1)
@@ -359,7 +270,7 @@ class _Flat:
         lo, hi = knots[:-1], knots[1:]
         nodes, weights, gp, gq = self._piece_sums(lo, hi, n)
         cum_p, cum_q = self._from_edge((weights * gp).sum(axis=1), (weights * gq).sum(axis=1))
-        mats = _integration_matrices(nodes, lo, hi)
+        mats = integration_matrices(nodes, lo, hi)
         fp = np.einsum("pij,pj->pi", mats, gp) + cum_p[1:, None]
         fq = np.einsum("pij,pj->pi", mats, gq) + cum_q[1:, None]
         factor = n * nodes ** (n - 1.0)
@@ -564,7 +475,7 @@ def displacement_constant(flat: FlatStresses, n: float, *, x: float | None = Non
     x = 0.5 * c if x is None else float(x)
     if not 0.0 < x < c or x >= prepared.x_e:
         raise ValueError(f"x must lie in the stick zone (0, c) = (0, {c!r}), got {x!r}")
-    xi, w = _legendre()
+    xi, w = gauss_legendre(COMPOSITE_NODES)
 
     def sqrt_rule(lo: float, hi: float, sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Nodes t = x + sign s^2 for t between lo and hi (one of them x), weights in s."""

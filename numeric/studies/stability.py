@@ -46,8 +46,9 @@ from asymptotics.adhesive import central_pressure_adhesive, pressure_adhesive_mp
 from asymptotics.materials import gamma_from_nu
 
 from numeric.core import table_data
-from numeric.core.eigen import NoEigenvalueError, SolverError, _end_value_row, _system, solve_adhesive, solve_mu
-from numeric.core.mesh import LEVELS, Resolution, adhesive_discretisation, discretise
+from numeric.core.collocation import EquilibratedLU, adhesive_system, end_value_row, equilibrate, solve_adhesive, system
+from numeric.core.eigen import NoEigenvalueError, SolverError, solve_mu
+from numeric.core.mesh import LEVELS, Resolution, discretise
 from numeric.solutions.flat_punch import flat_punch, friction_coefficient, stick_radius
 from numeric.solutions.power_law import power_law
 
@@ -317,11 +318,9 @@ def _in_table(p: SweepPoint) -> bool:
 
 # ----------------------------------------------------------------------------- plateau
 def _conditions(D: np.ndarray, exact: bool) -> tuple[float, float]:
-    """Condition of D and of its equilibrated form (as ``numeric.core.eigen._Factor`` scales it):
-    2-norm by SVD when ``exact``, else the 1-norm estimate of Hager-Higham."""
-    cs = 1.0 / np.max(np.abs(D), axis=0)
-    scaled = D * cs[None, :]
-    scaled *= (1.0 / np.max(np.abs(scaled), axis=1))[:, None]
+    """Condition of D and of its equilibrated form (``numeric.core.collocation.equilibrate``, what the
+    solver factors): 2-norm by SVD when ``exact``, else the 1-norm estimate of Hager-Higham."""
+    scaled = equilibrate(D)[0]
     out = []
     for M in (D, scaled):
         if exact:
@@ -360,7 +359,7 @@ def plateau_study(c: float, nu: float, *, finest_level: int = 4, extra: bool = T
                            time.process_time() - start))
             continue
         seconds = time.process_time() - start
-        D0, D1, _ = _system(discretise(c, res), gamma)
+        D0, D1, _ = system(discretise(c, res), gamma)
         cond = _conditions(D0 + field.mu * D1, D0.shape[0] < exact_condition_below)
         fields.append((label, field, cond, seconds))
     finest = [f for _, f, _, _ in fields if f is not None][-1]
@@ -372,18 +371,6 @@ def plateau_study(c: float, nu: float, *, finest_level: int = 4, extra: bool = T
         rows.append(PlateauRow(label, field.n_unknowns, field.mu, field.compliance, abs(field.mu - finest.mu),
                                abs(field.compliance - finest.compliance), *cond, seconds))
     return tuple(rows)
-
-
-def _adhesive_matrix(gamma: float, res: Resolution) -> np.ndarray:
-    """The c = 1 collocation matrix exactly as ``numeric.core.eigen.solve_adhesive`` builds it."""
-    _, x, w, U, Lo = adhesive_discretisation(res)
-    n = x.size
-    D = np.zeros((2 * n, 2 * n))
-    D[:n, :n] = U
-    D[:n, n:] = -gamma * (0.5 * w[None, :] - x[:, None] * Lo)  # (2.2a)
-    D[n:, :n] = -gamma * Lo  # (2.2b)
-    D[n:, n:] = x[:, None] * U
-    return D
 
 
 def adhesive_plateau(gamma: float, *, finest_level: int = 4, extra: bool = True,
@@ -401,7 +388,7 @@ def adhesive_plateau(gamma: float, *, finest_level: int = 4, extra: bool = True,
         start = time.process_time()
         field = solve_adhesive(gamma, res)
         seconds = time.process_time() - start
-        D = _adhesive_matrix(gamma, res)
+        D = adhesive_system(gamma, res)[0]
         cond = _conditions(D, D.shape[0] < exact_condition_below)
         p0 = float(field.pressure(np.array([0.0]))[0])
         rows.append(PlateauRow(label, field.n_unknowns, math.inf, field.compliance, abs(p0 - exact_p0),
@@ -413,7 +400,7 @@ def adhesive_plateau(gamma: float, *, finest_level: int = 4, extra: bool = True,
 def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> tuple[MpCheck, ...]:
     """The level-``level`` system D(mu) z = b at the double-precision root, solved in mpmath.
 
-    D, b are the double matrices of ``numeric.core.eigen._system``; mpmath solves them at ``dps``
+    D, b are the double matrices of ``numeric.core.collocation.system``; mpmath solves them at ``dps``
     digits, so the differences are the round-off of the double LU solve (the solver's own
     equilibrated LU) and of the eigenvalue iteration. One Newton step of
     F(mu) = mu p(c-) - c Q(c-) (2.11) in mpmath, with dz/dmu = -D^-1 D1 z, gives the root of
@@ -423,11 +410,11 @@ def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> 
     res = LEVELS[level]
     field = solve_mu(c, gamma, res)
     d = discretise(c, res)
-    D0, D1, b = _system(d, gamma)
+    D0, D1, b = system(d, gamma)
     ms = d.x_stick.size
-    end = _end_value_row(d.stick)
+    end = end_value_row(d.stick)
     D = D0 + field.mu * D1
-    z_double = _lu_solve_like_solver(D, b)
+    z_double = EquilibratedLU(D).solve(b)  # as the solver solves
     with mpmath.workdps(dps):
         LU, perm = mpmath.mp.LU_decomp(mpmath.matrix(D.tolist()))  # once: O(n^3) in mpmath
 
@@ -455,15 +442,6 @@ def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> 
         MpCheck("F(mu_double) / (mu p(c-)) in mpmath", F_scaled, 0.0),
         MpCheck("mu: double root vs 30-digit Newton root", field.mu, float(mu_root)),
     )
-
-
-def _lu_solve_like_solver(D: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Solve as ``numeric.core.eigen._Factor`` does (column then row equilibration, partial pivoting)."""
-    cs = 1.0 / np.max(np.abs(D), axis=0)
-    scaled = D * cs[None, :]
-    rs = 1.0 / np.max(np.abs(scaled), axis=1)
-    scaled *= rs[:, None]
-    return sla.lu_solve(sla.lu_factor(scaled), b * rs) * cs
 
 
 def adhesive_mp_check(gamma: float, xs: Sequence[float] = (0.0, 0.5, 0.9, 0.999), *, level: int = 4, dps: int = 30) -> tuple[MpCheck, ...]:

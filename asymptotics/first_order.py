@@ -45,6 +45,7 @@ __all__ = [
     "frictionless_pressure",
     "mu_over_gamma",
     "mu_over_gamma_mp",
+    "mu_over_gamma_log_slope",
     "stick_radius_first_order",
     "stick_radius_first_order_mp",
     "c_small_mu",
@@ -257,6 +258,26 @@ def _log_f0_and_slope(u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     # log f0 = log(theta/tanh theta) - log K'(c): no cancellation between u and log c
     log_theta_over_c = np.where(theta < 1e-8, theta * theta / 3.0, np.log(theta / np.where(theta < 1e-8, 1.0, c)))
     return log_theta_over_c - np.log(kp), 1.0 - theta * k_minus_e / (c * kp)
+
+
+def mu_over_gamma_log_slope(c: ArrayLike) -> np.ndarray | float:
+    """d log f0 / d log c of (2.28) for 0 < c < 1: a relative error e of mu moves c by e over this.
+
+    Analytic: d log f0/du = 1 - theta (K' - E')/(c K') at u = log(theta), theta = atanh(c), and
+    du/d log c = c / (theta (1 - c^2)). It rises from about 1/log(4/c) at small c (f0 ~ 1/log(4/c))
+    without bound as c -> 1 (f0 ~ (2/pi) atanh(c)).
+
+    Examples
+    --------
+    >>> round(float(mu_over_gamma_log_slope(0.5)), 12)
+    0.629092283773
+    """
+    cs = check_c(c)
+    if np.any(cs >= 1.0):
+        raise ValueError(f"c (stick radius / contact radius) must lie in (0, 1), got {c!r}")
+    theta = np.arctanh(cs)
+    slope_u = _log_f0_and_slope(np.log(theta))[1]
+    return scalar_or_array(slope_u * cs / (theta * (1.0 - cs) * (1.0 + cs)))
 
 
 def _stick_radius_order0(ratio: np.ndarray) -> np.ndarray:

@@ -57,7 +57,7 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial import chebyshev
 from numpy.typing import ArrayLike
-from scipy import integrate, special
+from scipy import integrate, optimize, special
 
 from .arrays import scalar_or_array
 from .first_order import mu_over_gamma, stick_radius_first_order
@@ -73,6 +73,7 @@ __all__ = [
     "f2_quadrature",
     "mu_over_gamma_second_order",
     "stick_radius_second_order",
+    "correction_ratio",
     "table_data",
     "compliance_p2",
     "compliance_p4",
@@ -333,13 +334,47 @@ def mu_over_gamma_second_order(c: ArrayLike, gamma: ArrayLike) -> np.ndarray | f
     return scalar_or_array(mu_over_gamma(cs) + gs**2 * f2(cs))
 
 
+def correction_ratio(c: float) -> float:
+    """R(c) = f2(c)/f0(c) for any 0 <= c < 1, as the law's inverse and its callers use it.
+
+    ``f2_over_f0`` on its range; at c = 0 (an underflowed stick radius) the limit of the small-c
+    fit, ``F2_SMALL_C_FIT[0]``; above C_MAX held at its value at C_MAX, where the table ends
+    (the quadrature there takes seconds a point and fails close to c = 1).
+    """
+    if c <= 0.0:
+        return F2_SMALL_C_FIT[0]
+    return float(f2_over_f0(min(c, C_MAX)))
+
+
+def _stick_radius_second_order_one(mu: float, gamma: float, c0: float) -> float:
+    """The root c <= c0 of log(f0(c) (1 + R(c) gamma^2)) = log(mu/gamma), R = ``correction_ratio``:
+    Brent in logit(c) below the first-order root c0 (the law increases in c); 0 where c underflows."""
+    target = math.log(mu / gamma)
+
+    def h(s: float) -> float:
+        c = float(special.expit(s))
+        return math.log(float(mu_over_gamma(c)) * (1.0 + correction_ratio(c) * gamma**2)) - target
+
+    hi = float(special.logit(min(c0, 1.0 - 2.0**-52)))
+    if h(hi) <= 0.0:  # c0 = 1 in doubles (mu/gamma > 12), or the law's root is within rounding of c0
+        return c0
+    lo, step = hi - 1.0, 1.0
+    while h(lo) > 0.0:
+        lo, step = lo - step, 2.0 * step
+        if lo < -740.0:  # c < 1e-321: underflows
+            return 0.0
+    return float(special.expit(optimize.brentq(h, lo, hi, xtol=1e-13, rtol=4.0 * np.finfo(float).eps)))
+
+
 def stick_radius_second_order(mu: ArrayLike, nu: float | None = None, *,
                               gamma: float | None = None) -> np.ndarray | float:
-    """Stick radius c for friction mu by the second-order law mu/gamma = f0(c) + gamma^2 f2(c).
+    """Stick radius c for friction mu by the second-order law mu/gamma = f0(c) (1 + gamma^2 R(c)), R = f2/f0.
 
-    The inverse of ``mu_over_gamma_second_order`` (beyond [S75] (2.28)), by the secant method in
-    u = log(atanh c) from the first-order c (``asymptotics.first_order.stick_radius_first_order``).
-    Give exactly one of ``nu`` and ``gamma``; c(0) = 0, c(inf) = 1 as at first order.
+    The inverse of ``mu_over_gamma_second_order`` (beyond [S75] (2.28)), one point at a time by
+    Brent's method in logit(c) below the first-order c
+    (``asymptotics.first_order.stick_radius_first_order``), with R from ``correction_ratio``
+    (held at its value at C_MAX above the table). Give exactly one of ``nu`` and ``gamma``;
+    c(0) = 0, c(inf) = 1 as at first order; 0 where c underflows (below ~1e-321).
 
     Examples
     --------
@@ -354,30 +389,11 @@ def stick_radius_second_order(mu: ArrayLike, nu: float | None = None, *,
         raise NotImplementedError(
             f"stick_radius_second_order needs asymptotics.second_order.f2, which is not available yet ({exc})"
         ) from None
-    inner = (c0 > 0.0) & (c0 < 1.0)
-    out = c0.copy()
-    if not np.any(inner):
-        return scalar_or_array(out)
-    target = np.broadcast_to(np.asarray(mu, dtype=float), c0.shape)[inner] / g
-
-    def residual(u: np.ndarray) -> np.ndarray:
-        c = np.tanh(np.exp(u))
-        return np.asarray(mu_over_gamma(c)) + g**2 * np.asarray(f2(c)) - target
-
-    u0 = np.log(np.arctanh(c0[inner]))
-    u1 = u0 - 1e-3
-    r0, r1 = residual(u0), residual(u1)
-    for _ in range(60):
-        denom = np.where(r1 != r0, r1 - r0, 1.0)
-        u2 = np.where(r1 != r0, u1 - r1 * (u1 - u0) / denom, u1)
-        u0, r0 = u1, r1
-        u1, r1 = u2, residual(u2)
-        if np.all(np.abs(u1 - u0) < 1e-14):
-            break
-    else:
-        raise ValueError("no stick radius solves mu/gamma = f0(c) + gamma^2 f2(c) for some mu (secant did not converge)")
-    out[inner] = np.tanh(np.exp(u1))
-    return scalar_or_array(out)
+    mus = np.broadcast_to(np.asarray(mu, dtype=float), c0.shape).ravel()
+    out = c0.ravel().copy()
+    for i in np.flatnonzero((out > 0.0) & np.isfinite(mus)):
+        out[i] = _stick_radius_second_order_one(float(mus[i]), g, float(out[i]))
+    return scalar_or_array(out.reshape(c0.shape))
 
 
 def compliance_p2(c: ArrayLike) -> np.ndarray | float:

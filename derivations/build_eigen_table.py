@@ -25,7 +25,7 @@ import numpy as np
 from asymptotics.first_order import mu_over_gamma
 from numeric.core.mesh import LEVELS
 from numeric.core.eigen import solve_mu
-from numeric.core.table import _evaluate
+from numeric.core.table import interpolate
 
 ROOT = Path(__file__).resolve().parents[1]
 C_MIN, C_MAX, GAMMA_MAX = 1e-3, 0.95, 2.0 / 3.0
@@ -76,7 +76,7 @@ def main() -> None:
     worst_mu = worst_p = 0.0
     for c, g in points:
         ref_log_ratio, ref_p = _sample(c, g, level=4 if c >= 1e-2 else 3)  # level 4 converges for c >= 1e-2 only
-        log_ratio_t, p_t = _evaluate(np.array([c]), np.array([g]), coef_mu, coef_p, C_MIN, C_MAX, GAMMA_MAX)
+        log_ratio_t, p_t = interpolate(np.array([c]), np.array([g]), coef_mu, coef_p, C_MIN, C_MAX, GAMMA_MAX)
         worst_mu = max(worst_mu, abs(math.expm1(log_ratio_t[0] - ref_log_ratio)))
         worst_p = max(worst_p, abs(p_t[0] - ref_p))
     lines = [

@@ -26,10 +26,12 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial import chebyshev
 from scipy import special
+from scipy.optimize import elementwise
 
 from asymptotics.first_order import mu_over_gamma
 
-__all__ = ["table_available", "in_domain", "table_friction_coefficient", "table_compliance", "table_stick_radius"]
+__all__ = ["table_available", "in_domain", "interpolate", "table_friction_coefficient", "table_compliance",
+           "table_stick_radius"]
 
 
 @lru_cache(maxsize=1)
@@ -53,8 +55,10 @@ def _xi(c: np.ndarray, c_min: float, c_max: float) -> np.ndarray:
     return 2.0 * (special.logit(c) - s_lo) / (s_hi - s_lo) - 1.0
 
 
-def _evaluate(c, gamma, coef_mu, coef_p, c_min, c_max, gamma_max) -> tuple[np.ndarray, np.ndarray]:
-    """log(mu/(gamma f0)) and P* at points (c, gamma) inside the domain."""
+def interpolate(c: np.ndarray, gamma: np.ndarray, coef_mu: np.ndarray, coef_p: np.ndarray, c_min: float, c_max: float,
+                gamma_max: float) -> tuple[np.ndarray, np.ndarray]:
+    """log(mu/(gamma f0)) and P* at points (c, gamma) inside the domain, from the Chebyshev coefficients
+    ``coef_mu``, ``coef_p`` in (xi, eta) (the committed ones, or a fresh build's)."""
     v1 = chebyshev.chebvander(_xi(c, c_min, c_max), coef_mu.shape[0] - 1)
     v2 = chebyshev.chebvander(2.0 * (gamma / gamma_max) ** 2 - 1.0, coef_mu.shape[1] - 1)
     return np.einsum("mi,ij,mj->m", v1, coef_mu, v2), np.einsum("mi,ij,mj->m", v1, coef_p, v2)
@@ -72,7 +76,7 @@ def _at(c: np.ndarray, gamma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     compliance = np.full(c.shape, np.nan)
     inside = in_domain(c, gamma)
     if np.any(inside):
-        log_ratio[inside], compliance[inside] = _evaluate(
+        log_ratio[inside], compliance[inside] = interpolate(
             c[inside], gamma[inside], coef_mu, coef_p, data.C_MIN, data.C_MAX, data.GAMMA_MAX)
     return log_ratio, compliance
 
@@ -93,10 +97,11 @@ def table_compliance(c: np.ndarray, gamma: np.ndarray) -> np.ndarray:
 def table_stick_radius(mu: np.ndarray, gamma: np.ndarray) -> np.ndarray:
     """c with mu(c, gamma) = mu from the table by root finding in logit(c) (nan outside its domain).
 
-    mu(c) increases with c (§2.1): Illinois regula falsi on [-1, 1] in the scaled logit(c)
-    converges for every point in about ten steps, to |log mu residual| < 1e-15. The gamma
-    direction is contracted once per point; each step evaluates a one-dimensional
-    Chebyshev series and f0 of (2.28) for all points at once.
+    mu(c) increases with c (§2.1): on [-1, 1] in the scaled logit(c) the bracketing root finder
+    of scipy (``scipy.optimize.elementwise.find_root``, Chandrupatla's method) solves all points
+    at once, to 1e-15 in the scaled logit. The gamma direction is contracted once per point;
+    each step evaluates a one-dimensional Chebyshev series (``chebval``) and f0 of (2.28) for
+    the points not yet converged.
     """
     mu, gamma = np.broadcast_arrays(np.asarray(mu, dtype=float), np.asarray(gamma, dtype=float))
     shape = mu.shape
@@ -105,43 +110,23 @@ def table_stick_radius(mu: np.ndarray, gamma: np.ndarray) -> np.ndarray:
     ok = (gamma > 0.0) & (gamma <= data.GAMMA_MAX) & (mu > 0.0)
     g = np.where(ok, gamma, data.GAMMA_MAX)
     eta = chebyshev.chebvander(2.0 * (g / data.GAMMA_MAX) ** 2 - 1.0, coef_mu.shape[1] - 1)
-    series = eta @ coef_mu.T  # (points, xi order): log ratio as a series in xi
+    series = (eta @ coef_mu.T).T  # (xi order, points): log ratio as a series in xi
     target = np.log(np.where(ok, mu, 1.0) / g)  # log(mu / gamma) = log f0(c) + log ratio
 
-    def excess(xi: np.ndarray) -> np.ndarray:  # increasing in xi
+    def excess(xi: np.ndarray, point: np.ndarray) -> np.ndarray:  # increasing in xi
         c = _c_of_xi(xi, data.C_MIN, data.C_MAX)
         f0 = np.arctanh(c) / (c * special.ellipkm1(c * c))  # (2.28), as mu_over_gamma without checks
-        return np.log(f0) + _clenshaw(series, xi) - target
+        return np.log(f0) + chebyshev.chebval(xi, series[:, point], tensor=False) - target[point]
 
+    points = np.arange(mu.size)
     lo, hi = np.full(mu.shape, -1.0), np.full(mu.shape, 1.0)
-    f_lo, f_hi = excess(lo), excess(hi)
-    ok &= (f_lo <= 0.0) & (f_hi >= 0.0)
-    f_lo, f_hi = np.where(ok, f_lo, -1.0), np.where(ok, f_hi, 1.0)
-    xi = lo.copy()
-    side = np.zeros(mu.shape)
-    for _ in range(60):  # Illinois regula falsi, all points together
-        xi = np.clip(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo, hi)
-        f = excess(xi)
-        right = f > 0.0
-        f_hi = np.where(~right & (side == -1), 0.5 * f_hi, f_hi)  # the end kept twice is halved
-        f_lo = np.where(right & (side == 1), 0.5 * f_lo, f_lo)
-        hi, f_hi = np.where(right, xi, hi), np.where(right, f, f_hi)
-        lo, f_lo = np.where(right, lo, xi), np.where(right, f_lo, f)
-        side = np.where(right, 1, -1)
-        if np.all((hi - lo < 1e-15) | (np.abs(f) < 1e-15)):
-            break
-    c = _c_of_xi(xi, data.C_MIN, data.C_MAX)
+    ok &= (excess(lo, points) <= 0.0) & (excess(hi, points) >= 0.0)  # elsewhere find_root flags the bracket
+    root = elementwise.find_root(excess, (lo, hi), args=(points,),
+                                 tolerances={"xatol": 1e-15, "xrtol": 0.0, "fatol": 1e-15, "frtol": 0.0})
+    c = _c_of_xi(root.x, data.C_MIN, data.C_MAX)
     return np.where(ok, c, np.nan).reshape(shape)
 
 
 def _c_of_xi(xi: np.ndarray, c_min: float, c_max: float) -> np.ndarray:
     s_lo, s_hi = math.log(c_min / (1 - c_min)), math.log(c_max / (1 - c_max))
     return special.expit(s_lo + (s_hi - s_lo) * (xi + 1.0) / 2.0)
-
-
-def _clenshaw(series: np.ndarray, xi: np.ndarray) -> np.ndarray:
-    """sum_k series[:, k] T_k(xi) for each row, by Clenshaw's recurrence."""
-    b1 = b2 = np.zeros(xi.shape)
-    for k in range(series.shape[1] - 1, 0, -1):
-        b1, b2 = 2.0 * xi * b1 - b2 + series[:, k], b1
-    return xi * b1 - b2 + series[:, 0]

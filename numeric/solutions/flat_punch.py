@@ -51,14 +51,15 @@ from scipy.special import expit, logit
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.arrays import scalar_or_array
-from asymptotics.first_order import frictionless_pressure, mu_over_gamma
+from asymptotics.first_order import frictionless_pressure, mu_over_gamma, mu_over_gamma_log_slope
+from asymptotics.second_order import correction_ratio
 from asymptotics.materials import check_c, check_mu, check_nu, check_x, gamma_from_nu, kappa_from_gamma, resolve_gamma
 
 from numeric.core.collocation import FlatField
 from numeric.core.eigen import NoEigenvalueError, SolverError, solve_mu
 from numeric.core.mesh import LEVELS
 from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
-from numeric.solutions.law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField, f2_ratio,
+from numeric.solutions.law import (ASYMPTOTIC_C_MAX, Bracket, FirstOrderField,
                                    law_bound, law_bracket, law_compliance, route_text)
 
 __all__ = ["AccuracyWarning", "FlatPunchSolution", "flat_punch", "stick_radius", "friction_coefficient", "NoEigenvalueError",
@@ -256,7 +257,7 @@ def _graded_breakpoints(c: float) -> np.ndarray:
 
 def _asymptotic_given_c(nu, c: float, gamma: float, order: int, why: str) -> FlatPunchSolution:
     f0 = float(mu_over_gamma(c))
-    mu = gamma * f0 * (1.0 + f2_ratio(c) * gamma**2 if order == 2 else 1.0)
+    mu = gamma * f0 * (1.0 + correction_ratio(c) * gamma**2 if order == 2 else 1.0)
     bound = law_bound(c, gamma, order)
     compliance, bound_p = law_compliance(c, gamma, order, f0)
     return FlatPunchSolution(nu, gamma, mu, c, compliance, max(bound * mu, bound_p),
@@ -266,7 +267,7 @@ def _asymptotic_given_c(nu, c: float, gamma: float, order: int, why: str) -> Fla
 
 def _asymptotic_given_mu(nu, mu: float, gamma: float, order: int, bracket: Bracket, why: str) -> FlatPunchSolution:
     """The law's c for given mu; error of c from the bracket, of P* its bound plus its change over the bracket."""
-    ratio = 1.0 + (f2_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
+    ratio = 1.0 + (correction_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
     values = [(float(compliance_adhesive(gamma)), 0.0) if c > 0.999 else  # P* <= P0* (B4), P* increases with c
               law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * ratio))
               for c in (bracket.c, bracket.lo, bracket.hi)]
@@ -700,12 +701,6 @@ def _report(name: str, done: int, total: int, started: float) -> None:
     sys.stderr.flush()
 
 
-def _log_slope_f0(c: np.ndarray) -> np.ndarray:
-    """d log f0 / d log c of (2.28) (central difference, step 1e-5 in log c; c <= 0.95)."""
-    h = 1e-5
-    return np.log(mu_over_gamma(c * math.exp(h)) / mu_over_gamma(c * math.exp(-h))) / (2.0 * h)
-
-
 def _table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
     """Where the table's value meets rtol: mu to TABLE_MU_RTOL; c to TABLE_MU_RTOL over d log mu/d log c,
     which is at least the first-order slope d log f0/d log c (f2/f0 and f4/f0 increase with c, measured)."""
@@ -713,7 +708,7 @@ def _table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
     if kind == "mu":
         return ok & (TABLE_MU_RTOL <= rtol)
     slope = np.ones(values.shape)
-    slope[ok] = _log_slope_f0(values[ok])
+    slope[ok] = mu_over_gamma_log_slope(values[ok])
     return ok & (TABLE_MU_RTOL / slope <= rtol)
 
 

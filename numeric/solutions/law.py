@@ -18,13 +18,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize
-from scipy.special import expit, logit
 
-from asymptotics.first_order import frictionless_pressure, mu_over_gamma, shear_ratio_first_order
-from asymptotics.first_order import stick_radius_first_order
-from asymptotics.second_order import C_MIN as F2_TABLE_C_MIN
-from asymptotics.second_order import F2_SMALL_C_ERROR, F2_SMALL_C_FIT, compliance_p2, compliance_p4, f2_over_f0
+from asymptotics import second_order
+from asymptotics.first_order import frictionless_pressure, shear_ratio_first_order, stick_radius_first_order
 
 # The asymptotic route: mu/gamma = f0(c) (first order, (2.28)) or f0(c) (1 + R(c) gamma^2),
 # R = f2/f0 (asymptotics.second_order), with error bounds measured against the full solution.
@@ -63,51 +59,28 @@ def envelope(bounds: tuple[float, ...], gamma: float) -> float:
     return math.inf  # gamma > 3/4 (dissimilar bodies): not measured
 
 
-def f2_ratio(c: float) -> float:
-    """R = f2/f0 at c (asymptotics.second_order: its table, the small-c fit below it)."""
-    if c <= 0.0:
-        return F2_SMALL_C_FIT[0]
-    return float(f2_over_f0(min(c, 0.999)))  # only bracket ends beyond ASYMPTOTIC_C_MAX pass 0.999; unused
-
-
 def law_bound(c: float, gamma: float, order: int) -> float:
     """Bound of |mu/mu_law - 1| at stick radius c for the law of this order (0: (2.28), 2: with f2)."""
     if gamma > GAMMA_BREAKS[-1]:
         return math.inf  # not measured
-    if c < F2_TABLE_C_MIN:
-        return K2_SMALL_C * gamma**2 if order == 0 else K4_SMALL_C * gamma**4 + F2_SMALL_C_ERROR * gamma**2
+    if c < second_order.C_MIN:
+        return K2_SMALL_C * gamma**2 if order == 0 else K4_SMALL_C * gamma**4 + second_order.F2_SMALL_C_ERROR * gamma**2
     return envelope(K2_BOUNDS if order == 0 else K4_BOUNDS, gamma) * gamma ** (2 + order)
 
 
 def law_stick_radius(mu: float, gamma: float, order: int) -> float:
-    """c with mu = gamma f0(c) (order 0: the inverse of (2.28) in asymptotics.first_order) or
-    mu = gamma f0(c) (1 + R(c) gamma^2) (order 2: Brent in logit(c) below the order-0 c, the law
-    increasing in c); 0 where c underflows."""
-    c0 = float(stick_radius_first_order(mu, gamma=gamma))
-    if order == 0 or c0 == 0.0:
-        return c0
-    target = math.log(mu / gamma)
-
-    def h(s: float) -> float:
-        c = expit(s)
-        return math.log(float(mu_over_gamma(c)) * (1.0 + f2_ratio(c) * gamma**2)) - target
-
-    hi = logit(min(c0, 1.0 - 2.0**-52))
-    if h(hi) <= 0.0:  # c0 = 1 in doubles (mu/gamma > 12), or the law's root is within rounding of c0
-        return c0
-    lo, step = hi - 1.0, 1.0
-    while h(lo) > 0.0:
-        lo, step = lo - step, 2.0 * step
-        if lo < -740.0:  # c < 1e-321: underflows
-            return 0.0
-    return expit(optimize.brentq(h, lo, hi, xtol=1e-13, rtol=4.0 * np.finfo(float).eps))
+    """c with mu = gamma f0(c) (order 0: the inverse of (2.28)) or mu = gamma f0(c) (1 + R(c) gamma^2)
+    (order 2), both inverted in ``asymptotics``; 0 where c underflows."""
+    if order == 0:
+        return float(stick_radius_first_order(mu, gamma=gamma))
+    return float(second_order.stick_radius_second_order(mu, gamma=gamma))
 
 
 def law_compliance(c: float, gamma: float, order: int, f0: float) -> tuple[float, float]:
     """P* = 1 + gamma^2 P2 (+ gamma^4 P4 for order 2 and c >= 1e-3) and the bound of its error (f0 = f0(c))."""
-    p2 = P2_OVER_F0_AT_ZERO * f0 if c < 1e-100 else float(compliance_p2(c))
-    if order == 2 and c >= F2_TABLE_C_MIN:
-        return 1.0 + gamma**2 * p2 + gamma**4 * float(compliance_p4(c)), KP4_BOUND * gamma**6 * f0
+    p2 = P2_OVER_F0_AT_ZERO * f0 if c < 1e-100 else float(second_order.compliance_p2(c))
+    if order == 2 and c >= second_order.C_MIN:
+        return 1.0 + gamma**2 * p2 + gamma**4 * float(second_order.compliance_p4(c)), KP4_BOUND * gamma**6 * f0
     return 1.0 + gamma**2 * p2, KP2_BOUND * gamma**4 * f0
 
 
@@ -162,6 +135,6 @@ def law_bracket(mu: float, gamma: float, order: int) -> Bracket:
         bound = law_bound(at, gamma, order)
         lo = law_stick_radius(mu / (1.0 + bound), gamma, order)
         hi = law_stick_radius(mu / (1.0 - bound), gamma, order) if bound < 1.0 else 1.0
-        if hi < F2_TABLE_C_MIN or at == 1.0:
+        if hi < second_order.C_MIN or at == 1.0:
             return Bracket(c, lo, hi, bound)
     raise AssertionError  # pragma: no cover

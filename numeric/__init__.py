@@ -1,8 +1,8 @@
 """Numerical solutions of the Hertz contact problem with finite friction (Spence 1975).
 
-The public API: ``flat_punch``, ``stick_radius``, ``friction_coefficient``
-(``numeric.solutions.flat_punch``) and ``power_law`` (``numeric.solutions.power_law``), with
-their result types and errors. This is the only module of ``numeric`` that re-exports.
+The public API: ``flat_punch`` (``numeric.solutions.flat_punch``), ``stick_radius`` and
+``friction_coefficient`` (``numeric.solutions.sweep``) and ``power_law``
+(``numeric.solutions.power_law``), with their result types and errors. This is the only module of ``numeric`` that re-exports.
 
 The folders are the layers, and imports only go down (``tests/test_layers.py`` checks it):
 ``app`` (SI calculator, command line) -> ``studies`` (tables, benchmark, stability,
@@ -12,9 +12,10 @@ expansion checks, figures) -> ``solutions`` (the problems and their routes) and
 """
 
 from numeric.core.eigen import NoEigenvalueError, SolverError
-from numeric.solutions.flat_punch import (AccuracyWarning, FlatPunchSolution, flat_punch, friction_coefficient,
-                                          stick_radius)
+from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import PowerLawSolution, power_law
+from numeric.solutions.solution import AccuracyWarning, FlatPunchSolution
+from numeric.solutions.sweep import friction_coefficient, stick_radius
 
 __all__ = [
     "AccuracyWarning",

@@ -20,14 +20,9 @@ from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
 from numeric import NoEigenvalueError, power_law
 from numeric.solutions.law import law_bracket as _law_bracket
-from numeric.solutions.flat_punch import (
-    C_ASYMPTOTIC,
-    AccuracyWarning,
-    _table_meets,
-    flat_punch,
-    friction_coefficient,
-    stick_radius,
-)
+from numeric import AccuracyWarning, flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.solver import C_ASYMPTOTIC
+from numeric.solutions.sweep import table_meets
 
 
 @lru_cache(maxsize=None)
@@ -134,8 +129,8 @@ def test_sweep_routes_meet_rtol():
 def test_table_bound_for_c_divides_by_the_slope():
     # c from the table: error 1e-10 in mu over d log mu/d log c (0.7 at c = .58, gamma = 1/3) > 1e-10
     c = np.array([0.5755548951])
-    assert not _table_meets("c", c, 1e-10)[0] and _table_meets("c", c, 1e-9)[0]
-    assert _table_meets("mu", np.array([0.2]), 1e-10)[0] and not _table_meets("mu", np.array([0.2]), 1e-11)[0]
+    assert not table_meets("c", c, 1e-10)[0] and table_meets("c", c, 1e-9)[0]
+    assert table_meets("mu", np.array([0.2]), 1e-10)[0] and not table_meets("mu", np.array([0.2]), 1e-11)[0]
 
 
 # ----------------------------------------------------------------------------- unreachable rtol

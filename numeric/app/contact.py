@@ -119,8 +119,10 @@ from numpy.typing import ArrayLike
 from asymptotics.arrays import read_only, scalar_or_array
 from asymptotics.materials import check_mu, check_n, check_nu, gamma_dissimilar
 
-from numeric.solutions.flat_punch import DEFAULT_LEVEL, FlatPunchSolution, flat_punch
+from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import PowerLawSolution, power_law
+from numeric.solutions.solution import FlatPunchSolution
+from numeric.solutions.solver import DEFAULT_LEVEL
 
 __all__ = [
     "Elastic",

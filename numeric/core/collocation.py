@@ -113,6 +113,10 @@ class FlatField:
         out[outer] = (2.0 / np.pi) * (Lo @ u_star) / xs  # (2.10)
         return out
 
+    def edge_value(self, shear: bool) -> float:
+        """p and q at x = 1: infinite, (1 - x)^(alpha - 1/2) with alpha < 1/2."""
+        return math.inf
+
 
 def system(d: Discretisation, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """D0, D1 and b of the collocated (2.2) for 0 < c < 1, with D(mu) = D0 + mu D1.

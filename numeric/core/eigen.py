@@ -1,4 +1,4 @@
-"""The eigenvalue problem of [S75] §2.2 on the hp discretisation: mu for given c.
+"""The eigenvalue problem of [S75] §2.2 on the hp discretisation: mu for given c, and c for given mu.
 
 The collocated system D(mu) z = b, D(mu) = D0 + mu D1, is ``numeric.core.collocation.system``.
 Eigenvalue condition: F(mu) = mu p(c-) - q(c-), the excess friction phi = p - q/mu of
@@ -16,6 +16,9 @@ centre brackets the root and the centre moves (Illinois regula falsi, or geometr
 steps), with a new LU: the bracketing is interleaved with the refactorisation, so it is
 written out here rather than handed to scipy.
 
+Given mu (``solve_c``), c with mu_c(c) = mu is found in logit(c): from the table's c, or by
+Brent on a coarse resolution, then secant steps on the fine one.
+
 References
 ----------
 [S75] D. A. Spence, "The Hertz contact problem with finite friction",
@@ -28,13 +31,16 @@ import math
 
 import numpy as np
 import scipy.linalg as sla
+from scipy import optimize
+from scipy.special import expit, logit
 
 from asymptotics.first_order import mu_over_gamma
 
 from numeric.core.collocation import EquilibratedLU, FlatField, end_value_row, flat_field, system
 from numeric.core.mesh import Discretisation, Resolution, discretise
+from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
 
-__all__ = ["solve_mu", "NoEigenvalueError", "SolverError"]
+__all__ = ["solve_mu", "solve_c", "NoEigenvalueError", "SolverError", "AboveTopError"]
 
 #: A model root is certified when its residual is below this (relative to the right-hand side).
 CERTIFIED = 1e-13
@@ -236,6 +242,128 @@ def solve_mu(c: float, gamma: float, res: Resolution, *, mu_guess: float | None 
     else:
         raise SolverError(f"eigenvalue iteration did not converge for c = {c}, gamma = {gamma:.6g} at this level")
     return flat_field(d, gamma, mu, z)
+
+
+class AboveTopError(Exception):
+    """mu exceeds mu_c at the search's largest stick radius c_top: the stick radius lies above it."""
+
+
+def _coarse_root(mu: float, gamma: float, res: Resolution, c_guess: float, c_top: float) -> tuple[FlatField, float]:
+    """Stick radius with mu_c(c) = mu at one resolution by Brent in s = logit(c) on log mu, c <= c_top.
+
+    Returns the solution and d(log mu)/ds at the root (from the two nearest evaluations)."""
+    evaluations: dict[float, FlatField] = {}
+    top = logit(c_top)
+
+    def g(s: float) -> float:
+        c = min(expit(s), c_top)
+        try:
+            field = solve_mu(c, gamma, res, mu_guess=mu)
+        except NoEigenvalueError:
+            return math.inf  # beyond the largest stick radius: mu is unbounded there
+        evaluations[s] = field
+        return math.log(field.mu) - math.log(mu)
+
+    step = 0.05
+    s0 = min(logit(c_guess), top - step)
+    lo, hi = s0 - step, s0 + step
+    g_lo, g_hi = g(lo), g(hi)
+    while g_lo > 0.0:
+        lo, hi, g_hi = lo - 2 * step, lo, g_lo
+        step *= 2
+        g_lo = g(lo)
+        if lo < -40:
+            raise NoEigenvalueError(f"no stick radius above 1e-17 for mu = {mu}, gamma = {gamma:.6g}")
+    while g_hi < 0.0:
+        if hi >= top:
+            raise AboveTopError()
+        lo, g_lo, hi = hi, g_hi, min(hi + 2 * step, top)
+        step *= 2
+        g_hi = g(hi)
+    root = optimize.brentq(g, lo, hi, xtol=1e-11)
+    field = evaluations.get(root) or solve_mu(expit(root), gamma, res, mu_guess=mu)
+    # slope from the nearest evaluation at a different c (s beyond c_top is clamped to it)
+    near = min((s for s in evaluations if evaluations[s].c != field.c), key=lambda s: abs(s - root))
+    slope = (math.log(evaluations[near].mu) - math.log(field.mu)) / (logit(evaluations[near].c) - logit(field.c))
+    return field, slope
+
+
+def _table_start(mu: float, gamma: float) -> tuple[float, float] | None:
+    """c from the Chebyshev table and d(log mu)/d(logit c) there, or None outside its domain."""
+    if not table_available():
+        return None
+    c = float(table_stick_radius(mu, gamma))
+    if math.isnan(c):
+        return None
+    s = logit(c)
+    pair = table_friction_coefficient(expit(np.array([s - 1e-4, s + 1e-4])), np.array(gamma))
+    if np.any(np.isnan(pair)):
+        return None
+    return c, float(np.log(pair[1] / pair[0]) / 2e-4)
+
+
+def solve_c(mu: float, gamma: float, fine: Resolution, coarse: Resolution, *, c_guess: float,
+            c_top: float) -> tuple[FlatField, float]:
+    """The stick radius for given mu: the ``fine`` solution with mu_c(c) = mu and the error of its c.
+
+    The start is the Chebyshev table's c (``numeric.core.table``) or, outside the table,
+    Brent on the ``coarse`` resolution from ``c_guess`` (the asymptotic law), up to ``c_top``.
+    Then secant steps in logit(c) on the fine level until the
+    fine mu matches to 1e-11 relative (usually 1-2 solves, the start being that close), c
+    stops moving in double precision (near c = 1), or 8 steps are spent: at very small c,
+    mu(c) at fixed resolution jitters by ~1e-10 relative (measured at c = 4e-5). The best
+    iterate is returned; the error of c adds its remaining mismatch in mu to the coarse
+    level's mismatch (or the coarse c's distance), both converted to c by the slope.
+
+    Raises
+    ------
+    AboveTopError
+        If mu exceeds mu_c(c_top): the stick radius lies between c_top and the largest one.
+    """
+    start = _table_start(mu, gamma)
+    coarse_field = None
+    if start is None:
+        coarse_field, slope = _coarse_root(mu, gamma, coarse, min(c_guess, c_top), c_top)
+        c_start = coarse_field.c
+    else:
+        c_start, slope = start
+    s_old, field = logit(c_start), solve_mu(c_start, gamma, fine, mu_guess=mu)
+    g_old = math.log(field.mu) - math.log(mu)
+    best, g_best = field, g_old
+    for _ in range(8):
+        if abs(g_old) < 1e-11:
+            break
+        s_new, new = _fine_step(mu, gamma, fine, s_old, -g_old / slope, c_top)
+        g_new = math.log(new.mu) - math.log(mu)
+        if abs(g_new) < abs(g_best):
+            best, g_best = new, g_new
+        if abs(new.c - field.c) <= 4 * np.spacing(new.c):  # c cannot move further in doubles
+            break
+        if g_new != g_old:
+            slope = (g_new - g_old) / (s_new - s_old)
+        s_old, g_old, field = s_new, g_new, new
+    to_c = best.c * (1.0 - best.c) / abs(slope)  # d c = c (1 - c) d logit(c), d log mu = slope d logit(c)
+    residual = abs(g_best) * to_c
+    if coarse_field is None:
+        check = solve_mu(best.c, gamma, coarse, mu_guess=mu)
+        return best, residual + max(abs(math.log(check.mu / mu)) * to_c, abs(check.compliance - best.compliance))
+    return best, residual + max(abs(best.c - coarse_field.c), abs(best.compliance - coarse_field.compliance))
+
+
+def _fine_step(mu: float, gamma: float, fine: Resolution, s_old: float, step: float,
+               c_top: float) -> tuple[float, FlatField]:
+    """The fine solution at logit(c) = s_old + step, the step shortened fourfold while it overshoots
+    the largest stick radius."""
+    while True:
+        s_new = s_old + step
+        try:
+            if expit(s_new) > c_top:
+                if solve_mu(c_top, gamma, fine, mu_guess=mu).mu < mu:
+                    raise AboveTopError()  # mu increases with c: the stick radius is above c_top
+                raise NoEigenvalueError("step beyond the search's largest stick radius")
+            return s_new, solve_mu(expit(s_new), gamma, fine, mu_guess=mu)
+        except NoEigenvalueError:
+            step /= 4.0  # overshot beyond the largest stick radius: shorten the step
 
 
 def _admissible(z: np.ndarray, mu: float, d: Discretisation) -> bool:

@@ -2,9 +2,9 @@
 its gamma^2 correction (``asymptotics.second_order``), with error bounds measured against the
 full solution, and the first-order stresses (2.26), (2.31) that go with it.
 
-Used where the caller's ``rtol`` allows it, and below the solver's reach (c < 1e-5). The bounds
-are envelopes of measured errors (the Chebyshev table and level-2 solves, see the comments);
-they are not proofs.
+Used where the caller's ``rtol`` allows it (``LawRoute.offers``), and below the solver's reach,
+c < 1e-5 (``LawRoute.last_resort``). The bounds are envelopes of measured errors (the Chebyshev
+table and level-2 solves, see the comments); they are not proofs.
 
 References
 ----------
@@ -20,7 +20,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from asymptotics import second_order
-from asymptotics.first_order import frictionless_pressure, shear_ratio_first_order, stick_radius_first_order
+from asymptotics.adhesive import compliance_adhesive
+from asymptotics.first_order import frictionless_pressure, mu_over_gamma, shear_ratio_first_order, stick_radius_first_order
+
+from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS
+from numeric.solutions.solution import FlatPunchSolution, Offer, meets, warn_unmet
 
 # The asymptotic route: mu/gamma = f0(c) (first order, (2.28)) or f0(c) (1 + R(c) gamma^2),
 # R = f2/f0 (asymptotics.second_order), with error bounds measured against the full solution.
@@ -110,6 +114,10 @@ class FirstOrderField:
             "the slip displacement (2.10) is not computed on the asymptotic route; use the solver "
             "(give level=, or an rtol below this route's error bound; the solver needs c >= 1e-5)")
 
+    def edge_value(self, shear: bool) -> float:
+        """p^(0) and q at x = 1: infinite ((2.26), q = mu p^(0) on the slip annulus)."""
+        return math.inf
+
 
 def route_text(order: int, bound: float, bound_p: float, why: str) -> str:
     return (f"asymptotic, {LAW_NAMES[order]}: relative error of mu <= {bound:.2g} (measured bound, c <= "
@@ -138,3 +146,101 @@ def law_bracket(mu: float, gamma: float, order: int) -> Bracket:
         if hi < second_order.C_MIN or at == 1.0:
             return Bracket(c, lo, hi, bound)
     raise AssertionError  # pragma: no cover
+
+
+def graded_breakpoints(c: float) -> np.ndarray:
+    """Breakpoints graded toward x = c (both sides) and toward the edge."""
+    if c <= 0.0:
+        return ADHESIVE_EDGE_BREAKPOINTS
+    k = 0.25 ** np.arange(1, 26)
+    points = np.unique(np.concatenate([ADHESIVE_EDGE_BREAKPOINTS, [c], c * (1.0 - k), c + (1.0 - c) * k]))
+    points.setflags(write=False)
+    return points
+
+
+def asymptotic_given_c(nu: float | None, c: float, gamma: float, order: int, why: str) -> FlatPunchSolution:
+    """The law's mu for given c, with its measured bound as the error (of mu; of P* its own bound)."""
+    f0 = float(mu_over_gamma(c))
+    mu = gamma * f0 * (1.0 + second_order.correction_ratio(c) * gamma**2 if order == 2 else 1.0)
+    bound = law_bound(c, gamma, order)
+    compliance, bound_p = law_compliance(c, gamma, order, f0)
+    return FlatPunchSolution(nu, gamma, mu, c, compliance, max(bound * mu, bound_p),
+                             route_text(order, bound, bound_p, why), graded_breakpoints(c),
+                             FirstOrderField(c, mu))
+
+
+def asymptotic_given_mu(nu: float | None, mu: float, gamma: float, order: int, bracket: Bracket,
+                        why: str) -> FlatPunchSolution:
+    """The law's c for given mu; error of c from the bracket, of P* its bound plus its change over the bracket."""
+    ratio = 1.0 + (second_order.correction_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
+    values = [(float(compliance_adhesive(gamma)), 0.0) if c > 0.999 else  # P* <= P0* (B4), P* increases with c
+              law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * ratio))
+              for c in (bracket.c, bracket.lo, bracket.hi)]
+    compliance, bound_p = values[0]
+    error_p = bound_p + max(abs(v[0] - compliance) for v in values[1:])
+    error_c = max(bracket.hi - bracket.c, bracket.c - bracket.lo)
+    return FlatPunchSolution(nu, gamma, mu, bracket.c, compliance, max(error_c, error_p),
+                             route_text(order, bracket.bound, bound_p,
+                                        f"so {bracket.lo:.6g} <= c <= {bracket.hi:.6g}; {why}"),
+                             graded_breakpoints(bracket.c),
+                             FirstOrderField(bracket.c, mu))
+
+
+#: Rough run time in seconds of the law of each order (for ordering the routes against the solver's levels).
+LAW_SECONDS = {0: 1e-4, 2: 1e-3}
+
+
+class LawRoute:
+    """The asymptotic route for one problem: exactly one of c (then mu is the answer) and mu (c) is given.
+
+    ``offers(rtol)`` answers for each order whether its measured bound meets rtol (c <= 0.9);
+    ``last_resort`` is the second-order law where nothing else can be had (below the solver's
+    reach). For given mu the second-order bracket is computed once, on first use.
+    """
+
+    def __init__(self, nu: float | None, gamma: float, c: float | None, mu: float | None):
+        self.nu, self.gamma, self.c, self.mu = nu, gamma, c, mu
+        self._bracket: Bracket | None = None
+
+    @property
+    def bracket(self) -> Bracket:
+        """The second-order law's c for the given mu and the range the true c lies in."""
+        if self._bracket is None:
+            self._bracket = law_bracket(self.mu, self.gamma, 2)
+        return self._bracket
+
+    def offers(self, rtol: float) -> list[Offer]:
+        """One offer per order (0: (2.28), 2: + gamma^2 f2)."""
+        return [Offer(LAW_SECONDS[order], lambda order=order: self._promises(order, rtol),
+                      lambda order=order: self._solve(order, f"meets rtol = {rtol:g}")) for order in (0, 2)]
+
+    def _promises(self, order: int, rtol: float) -> bool:
+        g = self.gamma
+        if self.c is not None:
+            return self.c <= ASYMPTOTIC_C_MAX and law_bound(self.c, g, order) <= rtol
+        if min(law_bound(0.0, g, order), law_bound(0.5, g, order)) > 4.0 * rtol:
+            return False  # c's relative error is mu's over d log mu/d log c (2.7 at c = 0.9 for f0): cannot meet rtol
+        b = self._order_bracket(order)
+        return b.hi <= ASYMPTOTIC_C_MAX and b.c != 0.0 and max(b.hi - b.c, b.c - b.lo) <= rtol * b.c
+
+    def _order_bracket(self, order: int) -> Bracket:
+        return self.bracket if order == 2 else law_bracket(self.mu, self.gamma, order)
+
+    def _solve(self, order: int, why: str) -> FlatPunchSolution:
+        if self.c is not None:
+            return asymptotic_given_c(self.nu, self.c, self.gamma, order, why)
+        return asymptotic_given_mu(self.nu, self.mu, self.gamma, order, self._order_bracket(order), why)
+
+    def meets(self, sol: FlatPunchSolution, rtol: float) -> bool:
+        """Whether the law's answer (mu given c, c given mu) meets rtol; an underflowed c whose whole
+        bracket underflowed too counts as met."""
+        if self.c is not None:
+            return meets(sol, rtol, sol.mu)
+        return meets(sol, rtol, sol.c) or (sol.c == 0.0 and self.bracket.hi == 0.0)
+
+    def last_resort(self, rtol: float | None, why: str) -> FlatPunchSolution:
+        """The second-order law, with an ``AccuracyWarning`` if it misses rtol."""
+        sol = self._solve(2, why)
+        if rtol is not None and not self.meets(sol, rtol):
+            warn_unmet(sol, rtol, sol.mu if self.c is not None else sol.c)
+        return sol

@@ -72,7 +72,8 @@ from asymptotics.materials import check_n, check_x
 from numeric.core.mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
                                      split_geometric)
-from numeric.solutions.flat_punch import LEVEL_TYPICAL_ERROR, flat_punch
+from numeric.solutions.flat_punch import flat_punch
+from numeric.solutions.solver import LEVEL_TYPICAL_ERROR
 
 __all__ = [
     "PowerLawSolution",

@@ -68,8 +68,9 @@ from numeric.baseline import scheme
 from numeric.core import collocation
 from numeric.core.mesh import LEVELS
 from numeric.core.table import table_compliance
-from numeric.solutions.flat_punch import flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import indentation_constant, power_law
+from numeric.solutions.sweep import friction_coefficient, stick_radius
 
 __all__ = [
     "Case",

@@ -54,7 +54,9 @@ from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import compliance_second_order, mu_over_gamma_second_order
 
 from numeric.core.table import table_compliance
-from numeric.solutions.flat_punch import FlatPunchSolution, flat_punch, friction_coefficient
+from numeric.solutions.flat_punch import flat_punch
+from numeric.solutions.solution import FlatPunchSolution
+from numeric.solutions.sweep import friction_coefficient
 
 __all__ = [
     "NUS",

@@ -52,8 +52,10 @@ from asymptotics.materials import check_c, check_nu, gamma_from_nu
 
 from numeric.core.eigen import NoEigenvalueError
 from numeric.core.table import table_compliance
-from numeric.solutions.flat_punch import FlatPunchSolution, flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import indentation_constant, power_law, power_law_pressure, power_law_shear
+from numeric.solutions.solution import FlatPunchSolution
+from numeric.solutions.sweep import friction_coefficient, stick_radius
 from numeric.studies.paper_tables import PAPER
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -49,8 +49,9 @@ from numeric.core import table_data
 from numeric.core.collocation import EquilibratedLU, adhesive_system, end_value_row, equilibrate, solve_adhesive, system
 from numeric.core.eigen import NoEigenvalueError, SolverError, solve_mu
 from numeric.core.mesh import LEVELS, Resolution, discretise
-from numeric.solutions.flat_punch import flat_punch, friction_coefficient, stick_radius
+from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import power_law
+from numeric.solutions.sweep import friction_coefficient, stick_radius
 
 __all__ = [
     "SweepPoint",

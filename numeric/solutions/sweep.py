@@ -1,0 +1,152 @@
+"""Sweeps over arrays: ``stick_radius`` and ``friction_coefficient`` of the flat punch ([S75] §2.2).
+
+All points at once through the Chebyshev table of ``numeric.core.table`` inside its domain
+(microseconds a point); the others one by one through ``flat_punch``, serially or mapped over
+an executor (``concurrent.futures``, a Dask client's ``get_executor()``), with a progress line
+on stderr. With ``rtol`` each point takes the cheapest route that meets it: the asymptotic law
+(``numeric.solutions.law``), the table where its recorded error does, else ``flat_punch``.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from collections.abc import Callable, Iterable
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from asymptotics.first_order import mu_over_gamma_log_slope
+from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
+
+from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
+from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
+from numeric.solutions.law import LawRoute
+from numeric.solutions.solution import first_meeting
+
+__all__ = ["Executor", "TABLE_MU_RTOL", "table_meets", "stick_radius", "friction_coefficient"]
+
+#: Relative error of mu from the Chebyshev table (numeric.core.table): MU_RELATIVE_ERROR = 5.2e-11, the
+#: worst of its build checks (at the corner c = 0.95, gamma = 2/3); about twice that.
+TABLE_MU_RTOL = 1e-10
+
+
+class Executor(Protocol):
+    """What a sweep can be handed to: ``concurrent.futures`` executors (threads or
+    processes) and ``dask.distributed.Client.get_executor()`` all provide this ``map``."""
+
+    def map(self, fn: Callable, *iterables: Iterable) -> Iterable: ...
+
+
+def _solved_c(mu: float, nu: float, level: int | None, rtol: float | None) -> float:
+    return flat_punch(nu=nu, mu=mu, level=level, rtol=rtol).c
+
+
+def _solved_mu(c: float, nu: float, level: int | None, rtol: float | None) -> float:
+    return flat_punch(nu=nu, c=c, level=level, rtol=rtol).mu
+
+
+def _report(name: str, done: int, total: int, started: float) -> None:
+    rate = done / max(time.perf_counter() - started, 1e-9)
+    end = "\n" if done == total else ""
+    sys.stderr.write(f"\r{name}: {done}/{total} points solved, {rate:.3g} points/s{end}")
+    sys.stderr.flush()
+
+
+def table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
+    """Where the table's value meets rtol: mu to TABLE_MU_RTOL; c to TABLE_MU_RTOL over d log mu/d log c,
+    which is at least the first-order slope d log f0/d log c (f2/f0 and f4/f0 increase with c, measured)."""
+    ok = ~np.isnan(values)
+    if kind == "mu":
+        return ok & (TABLE_MU_RTOL <= rtol)
+    slope = np.ones(values.shape)
+    slope[ok] = mu_over_gamma_log_slope(values[ok])
+    return ok & (TABLE_MU_RTOL / slope <= rtol)
+
+
+def _sweep(name: str, kind: str, table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool, level: int | None,
+           rtol: float | None, executor: Executor | None, progress: bool) -> np.ndarray | float:
+    """Evaluate ``table`` on all points at once; solve the points outside its domain, one by
+    one or through ``executor``, reporting progress on stderr when asked. With ``rtol``, points
+    where the asymptotic law meets it take that first, and the table only where it meets rtol."""
+    a, n = np.broadcast_arrays(np.asarray(first, dtype=float), np.asarray(nu, dtype=float))
+    shape = a.shape
+    a, n = a.ravel(), n.ravel()
+    g = np.asarray(gamma_from_nu(n), dtype=float)
+    out = np.full(a.shape, np.nan)
+    if rtol is not None:
+        for i in range(a.size):
+            if 0.0 < a[i] < (1.0 if kind == "mu" else math.inf) and g[i] > 0.0:
+                given = (float(a[i]), None) if kind == "mu" else (None, float(a[i]))
+                law = LawRoute(None, float(g[i]), *given)
+                sol = first_meeting(law.offers(rtol), rtol, lambda s: getattr(s, kind))
+                if sol is not None:
+                    out[i] = getattr(sol, kind)
+    rest = np.isnan(out)
+    if use_table and table_available() and np.any(rest):
+        values = np.array(table(a[rest], g[rest]), dtype=float)
+        if rtol is not None:
+            values = np.where(table_meets(kind, values, rtol), values, np.nan)
+        out[rest] = values
+    missing = np.flatnonzero(np.isnan(out))
+    if missing.size:
+        args = (a[missing], n[missing], [level] * missing.size, [rtol] * missing.size)
+        results = executor.map(solve, *args) if executor is not None else map(solve, *args)
+        started = time.perf_counter()
+        for k, (index, value) in enumerate(zip(missing, results), 1):
+            out[index] = value
+            if progress:
+                _report(name, k, missing.size, started)
+    out = out.reshape(shape)
+    return float(out) if out.ndim == 0 else out
+
+
+def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int | None = None,
+                 rtol: float | None = None, executor: Executor | None = None,
+                 progress: bool = False) -> np.ndarray | float:
+    """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
+
+    Inside the table's domain (``numeric.core.table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
+    comes from the Chebyshev table of the eigenvalue relation (microseconds a point, error
+    ``numeric.core.table_data.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
+    ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
+    ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
+    with a progress line on stderr when ``progress`` is true.
+
+    With ``rtol`` (not together with ``level``) the cheapest route meeting it for each point:
+    the asymptotic law (see ``flat_punch``), else the table where its error (``TABLE_MU_RTOL``
+    in mu, over d log mu/d log c in c) meets rtol, else ``flat_punch(rtol=rtol)``. An
+    ``AccuracyWarning`` from points solved through ``executor`` is raised in the workers.
+
+    Examples
+    --------
+    >>> round(float(stick_radius(0.298714615962, 0.0)), 9)
+    0.5
+    """
+    check_mu(mu)
+    check_nu(nu)
+    level_and_rtol(level, rtol)
+    return _sweep("stick_radius", "c", table_stick_radius, _solved_c, mu, nu, use_table, level,
+                  None if rtol is None else check_rtol(rtol), executor, progress)
+
+
+def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int | None = None,
+                         rtol: float | None = None, executor: Executor | None = None,
+                         progress: bool = False) -> np.ndarray | float:
+    """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays.
+
+    From the Chebyshev table inside its domain, else from ``flat_punch`` (see ``stick_radius``,
+    also for ``rtol``).
+    """
+    check_c(c)
+    check_nu(nu)
+    level_and_rtol(level, rtol)
+    return _sweep("friction_coefficient", "mu", table_friction_coefficient, _solved_mu, c, nu, use_table, level,
+                  None if rtol is None else check_rtol(rtol), executor, progress)

@@ -12,6 +12,7 @@ exact as gamma -> 0, an approximation for real materials (gamma = 2/7 for nu = 0
 Functions (numpy, vectorised; the ``*_mp`` twins evaluate the same result in mpmath):
 
     frictionless_pressure      p^(0)(x)                                        (2.26)
+    chi0                       the first-order excess friction chi^(0)(x)      (2.27)
     mu_over_gamma              f0(c)                                           (2.28)
     stick_radius_first_order   c for given mu, gamma: the inverse of (2.28)
     c_small_mu, c_large_mu     its limits (2.29) with correction terms
@@ -31,6 +32,7 @@ References
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import mpmath
@@ -43,6 +45,7 @@ from .materials import check_c, check_gamma, check_mu, check_x, resolve_gamma
 
 __all__ = [
     "frictionless_pressure",
+    "chi0",
     "mu_over_gamma",
     "mu_over_gamma_mp",
     "mu_over_gamma_log_slope",
@@ -106,6 +109,38 @@ def mu_over_gamma_mp(c, dps: int = 30):
         if c == 1:
             return mpmath.inf
         return mpmath.atanh(c) / (c * mpmath.ellipk(1 - c * c))  # (2.28)
+
+
+def chi0(x: ArrayLike, mu_over_gamma_value: float) -> np.ndarray | float:
+    """First-order excess-friction function chi^(0)(x) of [S75] (2.27).
+
+    chi^(0)(x) = (2/pi) [x K'(x) - (gamma/mu) atanh(x)],  K'(x) = K(sqrt(1 - x^2)),
+
+    i.e. chi of (2.12) with the frictionless pressure (2.26); its root in (0, 1) is the
+    first-order stick radius of (2.28). chi^(0)(0) = 0 (x K'(x) ~ x log(4/x)).
+
+    Parameters
+    ----------
+    x : array_like
+        0 <= x < 1.
+    mu_over_gamma_value : float
+        mu/gamma > 0.
+
+    Examples
+    --------
+    >>> round(float(chi0(0.5, 0.5094385890229398)), 12)   # the root c = 0.5 of (2.28)
+    0.0
+    """
+    xs = np.asarray(x, dtype=float)
+    if np.any(np.isnan(xs)) or np.any((xs < 0.0) | (xs >= 1.0)):
+        raise ValueError(f"x must lie in [0, 1), got {x!r}")
+    ratio = float(mu_over_gamma_value)
+    if not ratio > 0.0 or math.isinf(ratio):
+        raise ValueError(f"mu_over_gamma_value must be finite and > 0, got {mu_over_gamma_value!r}")
+    x_k = np.zeros(xs.shape)
+    inside = xs > 0.0
+    x_k[inside] = xs[inside] * special.ellipkm1(xs[inside] ** 2)  # x K'(x), K'(x) = K(m = 1 - x^2)
+    return scalar_or_array((2.0 / np.pi) * (x_k - np.arctanh(xs) / ratio))  # (2.27)
 
 
 # ---------------------------------------------------------------------------------------

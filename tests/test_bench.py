@@ -12,8 +12,9 @@ import time
 
 import pytest
 
-from numeric.baseline import scheme as spence1975
-from numeric.studies import bench
+from numeric.app.cli import main
+from numeric.baseline import scheme
+from numeric.studies import bench, bench_report
 from numeric.studies.bench import (
     SCHEME,
     SOLVER,
@@ -74,7 +75,7 @@ def test_paper_scheme_error_at_mesh_ii_matches_the_paper(tiny):
     assert abs(row.error * P_EXACT - abs(P_PAPER_MESH_II - P_EXACT)) < 1e-5
     assert 9.1e-4 < row.error * P_EXACT < 9.3e-4
     # and the row's value is what the scheme returns (relative error of that value, here)
-    direct = spence1975.solve_adhesive(spence1975.uniform_mesh(50), 0.0).compliance
+    direct = scheme.solve_adhesive(scheme.uniform_mesh(50), 0.0).compliance
     assert row.value == direct
     assert row.error == pytest.approx(abs(direct - P_EXACT) / P_EXACT, rel=1e-12)
 
@@ -87,16 +88,16 @@ def test_asymptotic_row_is_2_36(tiny):
 
 
 def test_render(tiny):
-    text = bench.render(tiny)
+    text = bench_report.render(tiny)
     assert "| paper's scheme (§4) | N = 50 (paper's) | 50 | 8.4e-04 |" in text  # 9.2e-4 / log 3
-    assert text == bench.render(tiny)  # deterministic for given measurements
+    assert text == bench_report.render(tiny)  # deterministic for given measurements
 
 
 def test_main_writes_table_and_plot(tmp_path, monkeypatch, capsys):
     # the command end to end on the tiny configuration (the plot takes most of this test's time)
     pytest.importorskip("matplotlib")
     monkeypatch.setattr(bench, "QUICK", TINY)
-    assert bench.main(["--quick", "--output", str(tmp_path)]) == 0
+    assert main(["bench", "--quick", "--output", str(tmp_path)]) == 0
     assert (tmp_path / "benchmark.md").read_text(encoding="utf-8") == capsys.readouterr().out
     assert (tmp_path / "benchmark.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
@@ -127,18 +128,18 @@ def test_median_time_loops_fast_calls():
 
 
 def test_clear_caches_empties_the_solver_caches():
-    spence1975.solve_adhesive(spence1975.uniform_mesh(10), 0.0)
-    assert spence1975._collocation_matrix.cache_info().currsize > 0
+    scheme.solve_adhesive(scheme.uniform_mesh(10), 0.0)
+    assert scheme.collocation_matrix.cache_info().currsize > 0
     names = clear_caches()
-    assert "numeric.baseline.scheme._collocation_matrix" in names
+    assert "numeric.baseline.scheme.collocation_matrix" in names
     assert "numeric.core.mesh._reference" in names
-    assert spence1975._collocation_matrix.cache_info().currsize == 0
+    assert scheme.collocation_matrix.cache_info().currsize == 0
 
 
 def test_aitken_recovers_the_limit_of_a_power_law_sequence():
     # values at h, h/2, h/4, h/8 of 1 + 0.3 h^1.2: Aitken's delta^2 is exact for this form
     values = [1.0 + 0.3 * 2.0 ** (-1.2 * k) for k in range(4)]
-    limit, order = bench._aitken(values)
+    limit, order = bench.aitken(values)
     assert abs(limit - 1.0) < 1e-14  # rounding of the differences (~1e-16 / 0.1)
     assert order == pytest.approx(1.2, abs=1e-12)
 

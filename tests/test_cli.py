@@ -173,7 +173,7 @@ def test_table_failed_row_exit_1(capsys, monkeypatch):
 
 
 def test_figures_subcommand(capsys, tmp_path):
-    """Wired to numeric.studies.figures.write_figures; fig2 is closed-form (2.27), so cheap."""
+    """Wired to numeric.studies.figure_plots.write_figures; fig2 is closed-form (2.27), so cheap."""
     code, out, _ = run(capsys, ["figures", "--only", "fig2_chi0", "--format", "svg", "--output", str(tmp_path)])
     assert code == 0 and out.split() == [str(tmp_path / "fig2_chi0.csv"), str(tmp_path / "fig2_chi0.svg")]
     assert (tmp_path / "fig2_chi0.svg").stat().st_size > 0

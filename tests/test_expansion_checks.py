@@ -24,14 +24,8 @@ import pytest
 from asymptotics.second_order import f2_quadrature as _f2_quadrature
 from asymptotics.first_order import mu_over_gamma
 from numeric import flat_punch
-from numeric.studies.expansion_checks import (
-    NUS,
-    expansion_errors,
-    expansion_study,
-    observed_orders,
-    plot_expansion_errors,
-    render_markdown,
-)
+from numeric.studies.expansion_checks import NUS, expansion_errors, expansion_study, observed_orders
+from numeric.studies.expansion_report import plot_expansion_errors, render_markdown
 
 
 f2_quadrature = lru_cache(maxsize=None)(_f2_quadrature)  # ~1 s a point, used twice at c = 0.5

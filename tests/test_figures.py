@@ -15,10 +15,10 @@ import mpmath
 import numpy as np
 import pytest
 
-from asymptotics.first_order import mu_over_gamma
+from asymptotics.first_order import chi0, mu_over_gamma
 from asymptotics.materials import gamma_from_nu
 from numeric import flat_punch, friction_coefficient
-from numeric.studies import figures
+from numeric.studies import figure_plots, figures
 from numeric.solutions.power_law import indentation_constant_316
 
 REPO = Path(__file__).resolve().parents[1]
@@ -50,8 +50,8 @@ def test_chi0_against_mpmath():
     with mpmath.workdps(30):
         exact = [float((2 / mpmath.pi) * (x * mpmath.ellipk(1 - mpmath.mpf(x) ** 2) - mpmath.atanh(x) / ratio))
                  for x in xs]
-    assert np.max(np.abs(figures.chi0(np.array(xs), ratio) - exact)) < 4e-15
-    assert figures.chi0(0.0, ratio) == 0.0  # x K'(x) ~ x log(4/x) -> 0
+    assert np.max(np.abs(chi0(np.array(xs), ratio) - exact)) < 4e-15
+    assert chi0(0.0, ratio) == 0.0  # x K'(x) ~ x log(4/x) -> 0
 
 
 def test_fig2_roots_satisfy_228_and_sign_pattern():
@@ -71,9 +71,9 @@ def test_fig2_roots_satisfy_228_and_sign_pattern():
 
 def test_chi0_rejects_bad_input():
     with pytest.raises(ValueError, match="x"):
-        figures.chi0(1.0, 0.5)
+        chi0(1.0, 0.5)
     with pytest.raises(ValueError, match="mu_over_gamma"):
-        figures.chi0(0.5, 0.0)
+        chi0(0.5, 0.0)
 
 
 # ---------------------------------------------------------------------------------------
@@ -98,7 +98,7 @@ def test_fig3_stick_radius(short_sweeps):
     # root at one point: chi0(c, mu/gamma) = 0 to rounding
     gamma = float(gamma_from_nu(nu))
     k = 200
-    assert abs(figures.chi0(first.y[k], first.x[k] / gamma)) < 1e-13
+    assert abs(chi0(first.y[k], first.x[k] / gamma)) < 1e-13
     # the paper's markers are its printed values (errata item 3), within 4e-4 of our mu
     # (the paper's 4-place claim is off by up to 3.7e-4, README), except its .1801 at
     # c = .5, a transposition of .1810 (README): that marker is 1e-3 off, as printed
@@ -208,7 +208,7 @@ def test_stick_radius_asymptotes(short_sweeps):
     assert np.allclose(large.y, 2 * np.exp(-np.pi * large.x), rtol=1e-15, atol=0)
     # the first-order curves are roots of chi0 (2.27): chi0(c, mu/gamma) = 0 to rounding
     (first,) = data.select("1-c(mu/gamma)", "(2.28)")
-    assert abs(figures.chi0(1.0 - first.y[100], first.x[100])) < 1e-12
+    assert abs(chi0(1.0 - first.y[100], first.x[100])) < 1e-12
     # (2.28) approaches (2.29) at both ends: relative gap below 1e-3 at c = 1e-4 and 1 - c = 1e-8
     (first_small,) = data.select("c(gamma/mu)", "(2.28)")
     assert abs(first_small.y[0] / (4 * np.exp(-first_small.x[0])) - 1) < 1e-3
@@ -270,11 +270,11 @@ def test_curve_and_figure_data_are_read_only():
 
 def test_write_figures_smoke(tmp_path):
     pytest.importorskip("matplotlib")
-    paths = figures.write_figures(tmp_path, names=["fig2_chi0"], formats=("png", "svg"))
+    paths = figure_plots.write_figures(tmp_path, names=["fig2_chi0"], formats=("png", "svg"))
     assert [p.name for p in paths] == ["fig2_chi0.csv", "fig2_chi0.png", "fig2_chi0.svg"]
     assert paths[1].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert paths[0].read_text() == figures.fig2_chi0().to_csv()
-    again = figures.write_figures(tmp_path / "again", names=["fig2_chi0"], formats=("png", "svg"))
+    again = figure_plots.write_figures(tmp_path / "again", names=["fig2_chi0"], formats=("png", "svg"))
     for a, b in zip(paths, again):  # no dates or random ids in the files
         assert a.read_bytes() == b.read_bytes()
     assert not (tmp_path / "index.md").exists()  # only written for the full set
@@ -282,13 +282,13 @@ def test_write_figures_smoke(tmp_path):
 
 def test_write_figures_rejects_bad_arguments(tmp_path):
     with pytest.raises(ValueError, match="formats"):
-        figures.write_figures(tmp_path, formats=("jpg",), names=["fig2_chi0"])
+        figure_plots.write_figures(tmp_path, formats=("jpg",), names=["fig2_chi0"])
     with pytest.raises(ValueError, match="names"):
-        figures.write_figures(tmp_path, names=["fig1"])
+        figure_plots.write_figures(tmp_path, names=["fig1"])
 
 
 def test_import_does_not_load_matplotlib():
-    code = "import sys, numeric.studies.figures; assert 'matplotlib' not in sys.modules"
+    code = "import sys, numeric.studies.figures, numeric.studies.figure_plots; assert 'matplotlib' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
@@ -299,10 +299,10 @@ def test_committed_figures_are_up_to_date(tmp_path):
     below; a change of method or grid fails)."""
     pytest.importorskip("matplotlib")
     figures._sweep.cache_clear()
-    paths = figures.write_figures(tmp_path)
+    paths = figure_plots.write_figures(tmp_path)
     names = {p.name for p in paths}
-    assert {f"{n}.png" for n in figures.FIGURES} | {f"{n}.csv" for n in figures.FIGURES} | {"index.md"} == names
-    for name in figures.FIGURES:
+    assert {f"{n}.png" for n in figure_plots.FIGURES} | {f"{n}.csv" for n in figure_plots.FIGURES} | {"index.md"} == names
+    for name in figure_plots.FIGURES:
         committed = REPO / "derivations" / "figures" / f"{name}.csv"
         fresh_header, fresh = _parse_csv((tmp_path / f"{name}.csv").read_text())
         old_header, old = _parse_csv(committed.read_text())

@@ -22,7 +22,8 @@ from hypothesis import strategies as st
 from asymptotics.materials import gamma_from_nu
 from numeric import flat_punch, friction_coefficient, power_law, stick_radius
 from numeric.core import table_data
-from numeric.studies.stability import HonestyCheck, SweepPoint, main, sweep
+from numeric.app.cli import main
+from numeric.studies.stability import HonestyCheck, SweepPoint, sweep
 
 NU = st.floats(-0.5, 0.45)
 C = st.floats(0.05, 0.95)
@@ -216,7 +217,7 @@ def test_honesty_check_flags_a_violation():
 
 def test_quick_report(tmp_path):
     out = tmp_path / "stability.md"
-    assert main(["--quick", "--output", str(out)]) == 0
+    assert main(["stability", "--quick", "--output", str(out)]) == 0
     text = out.read_text()
     assert "## Sweep summary" in text and "## Plateau past convergence" in text
     assert "Calls returning a non-finite or out-of-range value: 0." in text

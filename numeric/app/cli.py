@@ -2,8 +2,8 @@
 
 Subcommands: ``sphere``, ``punch``, ``cone``, ``power-law`` (a contact in SI units,
 ``numeric.app.contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
-``figures``, ``bench`` and ``tables`` (the paper's tables). ``hertz-friction CMD --help``
-describes each.
+and the studies: ``figures``, ``bench``, ``stability``, ``derivations`` (the committed documents)
+and ``tables`` (the paper's tables). ``hertz-friction CMD --help`` describes each.
 
 Exit codes: 0 success; 2 bad usage or bad input (argparse's convention; the message, naming
 the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``,
@@ -18,6 +18,7 @@ import io
 import json
 import math
 import sys
+from pathlib import Path
 
 _PREFIXES = {-12: "p", -9: "n", -6: "u", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
 _PHYSICAL = ("sphere", "punch", "cone", "power-law")
@@ -60,6 +61,14 @@ def _build_parser() -> argparse.ArgumentParser:
         epilog="Exit codes: 0 ok, 1 numerical failure, 2 bad usage or input.",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    _physical_parsers(commands)
+    _solve_parser(commands)
+    _table_parser(commands)
+    _study_parsers(commands)
+    return parser
+
+
+def _physical_parsers(commands) -> None:
     phys = "Press {what} into an elastic half-space with friction; SI units in and out (N, m, Pa)."
     p = commands.add_parser("sphere", help="a sphere of radius R (Hertz)", description=phys.format(what="a sphere"))
     p.add_argument("--radius", type=float, required=True, help="sphere radius R, m")
@@ -80,6 +89,8 @@ def _build_parser() -> argparse.ArgumentParser:
     shape.add_argument("--k", type=float, help="coefficient k, m^(1-n): z = k r^n")
     _material_args(p)
 
+
+def _solve_parser(commands) -> None:
     p = commands.add_parser("solve", help="one dimensionless case: c, mu, P* (and A, C for z ~ r^n)",
                             description="Solve the dimensionless problem of [S75] §2 (and §3 with --n).")
     material = p.add_mutually_exclusive_group(required=True)
@@ -92,6 +103,8 @@ def _build_parser() -> argparse.ArgumentParser:
     p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4), help="solver level (default 2)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
 
+
+def _table_parser(commands) -> None:
     p = commands.add_parser(
         "table", help="c and P* over ranges of mu and nu (CSV or JSON)",
         description="Tabulate the stick radius c and the flat-punch compliance P0* (optionally the sphere's A) "
@@ -106,19 +119,36 @@ def _build_parser() -> argparse.ArgumentParser:
     p.add_argument("--progress", choices=("auto", "always", "never"), default="auto",
                    help="row counter on stderr (auto: when stderr is a terminal)")
 
+
+def _study_parsers(commands) -> None:
     p = commands.add_parser("figures", help="write the figures (PNG/SVG)", description="Write the figures.")
     p.add_argument("--output", default="figures", metavar="DIR", help="directory (default ./figures)")
     p.add_argument("--format", action="append", choices=("png", "svg", "pdf"), dest="formats",
                    help="file format, repeatable (default png)")
     p.add_argument("--only", action="append", metavar="NAME", dest="names",
-                   help="only this figure (a key of numeric.studies.figures.FIGURES), repeatable")
-
-    commands.add_parser("bench", help="the benchmark (arguments are passed on; bench --help for its own)",
-                        add_help=False)
-    commands.add_parser("derivations", help="regenerate derivations/ (documents, figures) in a source checkout; "
-                        "arguments are passed on (derivations --help for its own)", add_help=False)
+                   help="only this figure (a key of numeric.studies.figure_plots.FIGURES), repeatable")
+    p = commands.add_parser("bench", help="the benchmark: error against run time of every method",
+                            description="Run time against error of every method for the flat punch and the sphere "
+                                        "(numeric.studies.bench); writes benchmark.md and benchmark.png.")
+    p.add_argument("--quick", action="store_true", help="nu = 0.25, c = 0.5 and 1 only, coarser meshes (~1 min)")
+    p.add_argument("--output", type=Path, default=None,
+                   help="directory for benchmark.md and benchmark.png (default: derivations/ for the full run; "
+                        "the quick run only prints unless given)")
+    p.add_argument("--no-plot", action="store_true", help="do not draw benchmark.png")
+    p = commands.add_parser("stability", help="the stability study: parameter sweep, honesty of error, round-off",
+                            description="Stress tests of numerical stability (numeric.studies.stability); writes "
+                                        "stability.md.")
+    p.add_argument("--quick", action="store_true", help="small grid and coarse levels (a few seconds)")
+    p.add_argument("--output", type=Path, default=None,
+                   help="the report (default: derivations/stability.md of the source checkout)")
+    p = commands.add_parser("derivations", help="regenerate derivations/ (documents, figures) in a source checkout",
+                            description="Regenerate the committed documents and figures of derivations/ "
+                                        "(numeric.studies.documents).")
+    p.add_argument("--fast", action="store_true", help="skip the blocks and figures that need the full solver")
+    p.add_argument("--check", action="store_true", help="compare with the committed files instead of writing")
+    p.add_argument("--directory", type=Path, default=None,
+                   help="the derivations folder (default: derivations/ of the source checkout)")
     commands.add_parser("tables", help="print the tables of Spence (1975) beside our recomputation and the exact values")
-    return parser
 
 
 def _elastic_bodies(args):
@@ -313,7 +343,7 @@ def _format_rows(rows: list[dict], fmt: str) -> str:
 
 
 def _run_figures(args) -> int:
-    from numeric.studies.figures import write_figures
+    from numeric.studies.figure_plots import write_figures
 
     paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names)
     for path in paths:
@@ -321,47 +351,84 @@ def _run_figures(args) -> int:
     return 0
 
 
-def _run_derivations(argv: list[str]) -> int:
-    """Run ``derivations/regenerate.py`` of the source checkout this package is installed from."""
-    import runpy
-    from pathlib import Path
+def _checkout_path(given: Path | None, command: str, file: str = "") -> Path | None:
+    """``given``, or ``file`` in the source checkout's derivations/ (None, with a message, if there is none)."""
+    from numeric.studies.documents import source_derivations
 
-    script = Path(__file__).resolve().parents[2] / "derivations" / "regenerate.py"
-    if not script.exists():
-        sys.stderr.write("hertz-friction derivations: error: needs a source checkout installed with pip install -e "
-                         f"(no {script})\n")
+    if given is not None:
+        return given
+    found = source_derivations()
+    if found is None:
+        sys.stderr.write(f"hertz-friction {command}: error: needs a source checkout installed with pip install -e "
+                         "(no derivations/ beside the package), or an explicit path\n")
+        return None
+    return found / file if file else found
+
+
+def _run_bench(args) -> int:
+    from numeric.studies import bench
+    from numeric.studies.bench_report import plot, render
+    from numeric.studies.documents import source_derivations
+
+    output = args.output if args.output is not None or args.quick else source_derivations()
+    result = bench.run(bench.QUICK if args.quick else bench.FULL, progress=lambda message: print(message, file=sys.stderr))
+    text = render(result)
+    if output is not None:
+        output.mkdir(parents=True, exist_ok=True)
+        (output / "benchmark.md").write_text(text, encoding="utf-8")
+        if not args.no_plot:
+            plot(result, output / "benchmark.png")
+    sys.stdout.write(text)
+    return 0
+
+
+def _run_stability(args) -> int:
+    from numeric.studies.stability import run
+    from numeric.studies.stability_report import write_report
+
+    output = _checkout_path(args.output, "stability", "stability.md")
+    if output is None:
         return 2
-    try:
-        return runpy.run_path(str(script))["main"](argv)
-    except SystemExit as exc:  # its --help or a usage error
-        return exc.code if isinstance(exc.code, int) else 2
+    report = run(quick=args.quick)
+    write_report(report, output)
+    sys.stdout.write(f"wrote {output} ({len(report.points)} calls, {sum(v for _, v in report.seconds):.0f} s CPU)\n")
+    return 0
+
+
+def _run_derivations(args) -> int:
+    from numeric.studies.documents import regenerate
+
+    directory = _checkout_path(args.directory, "derivations")
+    if directory is None:
+        return 2
+    stale = regenerate(directory, fast=args.fast, check=args.check, report=lambda m: sys.stdout.write(m + "\n"))
+    if stale:
+        sys.stderr.write("out of date (run python derivations/regenerate.py): " + ", ".join(stale) + "\n")
+        return 1
+    return 0
+
+
+def _run_tables(args) -> int:
+    from numeric.studies.paper_tables import render
+
+    sys.stdout.write(render() + "\n")
+    return 0
+
+
+_RUN = {"solve": _run_solve, "table": _run_table, "figures": _run_figures, "bench": _run_bench,
+        "stability": _run_stability, "derivations": _run_derivations, "tables": _run_tables}
 
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hertz-friction`` console script; returns the exit code."""
     from numeric import NoEigenvalueError, SolverError
 
-    argv = list(sys.argv[1:] if argv is None else argv)
-    if argv[:1] == ["derivations"]:  # the repository's generator, with its own arguments
-        return _run_derivations(argv[1:])
-    if argv[:1] == ["bench"]:  # everything after "bench" belongs to the benchmark's own parser
-        from numeric.studies.bench import main as bench_main
-
-        try:
-            return bench_main(argv[1:])
-        except SystemExit as exc:  # its --help or a usage error
-            return exc.code if isinstance(exc.code, int) else 2
     parser = _build_parser()
     try:
-        args = parser.parse_args(argv)
+        args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
     except SystemExit as exc:  # --help (0) or a usage error (2); argparse has printed the message
         return exc.code if isinstance(exc.code, int) else 2
-    if args.command == "tables":
-        from numeric.studies.paper_tables import render
-
-        sys.stdout.write(render() + "\n")
-        return 0
-    run = {"solve": _run_solve, "table": _run_table, "figures": _run_figures}.get(args.command, _run_physical)
+    run = _RUN.get(args.command, _run_physical)
     try:
         return run(args)
     except ValueError as err:

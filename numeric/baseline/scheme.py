@@ -63,6 +63,7 @@ __all__ = [
     "uniform_mesh",
     "paper_mesh",
     "friction_mesh",
+    "collocation_matrix",
     "solve_at_mu",
     "solve_adhesive",
     "solve_friction",
@@ -181,8 +182,9 @@ def friction_mesh(c: float, h: float = 0.02, band: float = 0.08) -> Mesh:
 
 
 @lru_cache(maxsize=64)
-def _collocation_matrix(nodes_key: bytes, gamma: float) -> np.ndarray:
-    """The 2N x 2N matrix L of (4.3), acting on (p_1..p_N, s_1..s_N), s = q/t."""
+def collocation_matrix(nodes_key: bytes, gamma: float) -> np.ndarray:
+    """The 2N x 2N matrix L of (4.3), acting on (p_1..p_N, s_1..s_N), s = q/t, for the mesh whose
+    nodes are ``np.frombuffer(nodes_key)`` (cached per mesh and gamma; read-only)."""
     nodes = np.frombuffer(nodes_key)
     x = 0.5 * (nodes[1:] + nodes[:-1])
     widths = np.diff(nodes)
@@ -198,7 +200,7 @@ def _collocation_matrix(nodes_key: bytes, gamma: float) -> np.ndarray:
 def _system(mesh: Mesh, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """D0, D1 with D(mu) = D0 + mu D1 of (4.6)-(4.7), and the full L of (4.3)."""
     n, m = mesh.size, mesh.stick_index
-    L = _collocation_matrix(mesh.nodes.tobytes(), gamma)
+    L = collocation_matrix(mesh.nodes.tobytes(), gamma)
     rows = np.r_[0:n, n : n + m]
     D0 = np.hstack([L[rows, :n], L[rows, n : n + m]])
     D1 = np.zeros_like(D0)

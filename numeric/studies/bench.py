@@ -16,7 +16,7 @@ adhesive case c = 1 for each nu, every method at every resolution it offers:
   ``numeric.core.table.table_compliance``);
 * the asymptotic formulas of ``asymptotics.first_order``: (2.28) and its inverse, the
   first-order compliance (2.34), the first-order central pressure (2.32)-(2.33), (2.36) at
-  c = 1, and the second-order law of ``asymptotics.second_order`` where that module exists.
+  c = 1, and the second-order law of ``asymptotics.second_order``.
 
 Errors are relative, |value - reference| / |reference|. References: the closed forms of
 App. B at c = 1 ((B4), (4.10), (4.18)); for 0 < c < 1 our solver's finest level 4, whose
@@ -33,8 +33,10 @@ timed run, so its run time is that of a case not solved before, as it is for our
 whose caches (reference meshes and Abel blocks per level, Gauss rules, the table) do not
 depend on c or gamma.
 
-    python -m numeric.studies.bench            # writes derivations/benchmark.md and .png (minutes)
-    python -m numeric.studies.bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
+    hertz-friction bench            # writes derivations/benchmark.md and .png (minutes)
+    hertz-friction bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
+
+This module measures; ``numeric.studies.bench_report`` renders the Markdown and the plot.
 
 On a shared machine set ``OPENBLAS_NUM_THREADS=1``: threaded BLAS under load was measured
 3-6 times slower.
@@ -47,8 +49,6 @@ References
 
 from __future__ import annotations
 
-import argparse
-import importlib
 import math
 import os
 import statistics
@@ -56,11 +56,10 @@ import sys
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
-from asymptotics import first_order
+from asymptotics import first_order, second_order
 from asymptotics.adhesive import central_pressure_adhesive, compliance_adhesive, sphere_A_adhesive
 from asymptotics.materials import gamma_from_nu
 
@@ -90,10 +89,8 @@ __all__ = [
     "run",
     "time_to_reach",
     "best_error_within",
+    "aitken",
     "headline",
-    "render",
-    "plot",
-    "main",
 ]
 
 # method names (also the legend of the plot)
@@ -368,7 +365,7 @@ def _scheme_tol(h: float) -> float:
 
 
 def _measure_scheme(case: Case, ref: Reference, config: Config) -> list[Row]:
-    clear = scheme._collocation_matrix.cache_clear  # per (mesh, gamma), i.e. per case: a new case builds it
+    clear = scheme.collocation_matrix.cache_clear  # per (mesh, gamma), i.e. per case: a new case builds it
     rows = []
 
     def add(method: str, resolution: str, call, rank: float, published: bool) -> None:
@@ -431,16 +428,6 @@ def _measure_table(case: Case, ref: Reference, config: Config) -> list[Row]:
     return _rows(case, ref, TABLE, "level-3 fit", 0, 0, {"mu": (mu, t_mu), "c": (c, t_c), "P*": (p, t_p)})
 
 
-def _second_order():
-    """``asymptotics.second_order`` if it exists and works (written alongside this benchmark), else None."""
-    try:
-        module = importlib.import_module("asymptotics.second_order")
-        module.mu_over_gamma_second_order(0.5, 0.25)  # its generated table may not exist yet
-    except ImportError:
-        return None
-    return module
-
-
 def _measure_asymptotic(case: Case, ref: Reference, config: Config) -> list[Row]:
     g = case.gamma
     if case.adhesive:
@@ -454,14 +441,11 @@ def _measure_asymptotic(case: Case, ref: Reference, config: Config) -> list[Row]
                        config),  # (2.32)-(2.33)
     }
     rows = _rows(case, ref, ASYMPTOTIC, "first order", 0, 1, values)
-    second = _second_order()
-    if second is not None:
-        values = {
-            "mu": _timed(lambda: g * float(second.mu_over_gamma_second_order(case.c, g)), config),
-            "c": _timed(lambda: float(second.stick_radius_second_order(ref.mu, gamma=g)), config),
-        }
-        rows += _rows(case, ref, ASYMPTOTIC, "second order", 0, 2, values)
-    return rows
+    values = {
+        "mu": _timed(lambda: g * float(second_order.mu_over_gamma_second_order(case.c, g)), config),
+        "c": _timed(lambda: float(second_order.stick_radius_second_order(ref.mu, gamma=g)), config),
+    }
+    return rows + _rows(case, ref, ASYMPTOTIC, "second order", 0, 2, values)
 
 
 _MEASURES = {"scheme": _measure_scheme, "solver": _measure_solver, "table": _measure_table,
@@ -514,7 +498,7 @@ def _measure_setup(config: Config) -> list[Setup]:
     return out
 
 
-def _aitken(values: Sequence[float]) -> tuple[float, float]:
+def aitken(values: Sequence[float]) -> tuple[float, float]:
     """Limit and observed order of the last three terms of a sequence at h, h/2, h/4 (Aitken's delta^2)."""
     d1, d2 = values[-2] - values[-3], values[-1] - values[-2]
     ratio = d1 / d2
@@ -533,8 +517,8 @@ def _cross_checks(rows: Sequence[Row], references: Sequence[Reference]) -> list[
             if len(halving) < 4:
                 continue
             values = [r.value for r in halving]
-            ext, order = _aitken(values)
-            coarse, _ = _aitken(values[:-1])
+            ext, order = aitken(values)
+            coarse, _ = aitken(values[:-1])
             out.append(CrossCheck(ref.case, quantity, ext, abs(ext - coarse), order, ref.value(quantity)))
     return out
 
@@ -626,260 +610,3 @@ def _extrapolate(points: Sequence[tuple[float, float]], target: float) -> tuple[
     log_t, log_e = np.log([t for t, _ in points]), np.log([e for _, e in points])
     minus_s, a = np.polyfit(log_t, log_e, 1)
     return float(-minus_s), float(np.exp((math.log(target) - a) / minus_s))
-
-
-# -------------------------------------------------------------------------------- output
-def _ms(seconds: float) -> str:
-    ms = 1e3 * seconds
-    return f"{ms:.3g}" if ms >= 0.01 else f"{ms:.1e}"
-
-
-def _err(e: float) -> str:
-    return "0" if e == 0.0 else f"{e:.1e}"
-
-
-def _headline_lines(h: Headline, where: str) -> list[str]:
-    lines = [
-        f"- **{QUANTITY_TEXT[h.quantity]}, {where}** ({h.cases} cases): our solver reaches {h.target:.0e} in "
-        f"{_ms(h.our_seconds)} ms ({', '.join(h.our_levels)}); the paper's scheme at its published resolution "
-        f"takes {_ms(h.paper_seconds)} ms for errors up to {h.paper_error:.1e}: time ratio "
-        f"{h.ratio:.3g} (range {h.ratio_range[0]:.3g}-{h.ratio_range[1]:.3g} over the cases).",
-        f"  - In our solver's time the paper's scheme reaches {h.paper_error_in_our_time:.1e} at best (worst case); "
-        f"its error falls like time^-{h.paper_slope:.2f}, so it would need about {h.paper_extrapolated_seconds:.0e} s "
-        f"for {h.target:.0e} (extrapolated, median over the cases).",
-    ]
-    if h.our_error_in_paper_time is None:
-        lines.append(f"  - In the paper's time none of our solver's levels runs (the cheapest, level 1, takes "
-                     f"{_ms(h.our_fastest_seconds)} ms)" + (
-                         f"; the Chebyshev table route reaches {h.table_error:.1e} in {_ms(h.table_seconds)} ms."
-                         if h.table_error is not None else "."))
-    else:
-        lines.append(f"  - In the paper's time our solver reaches {h.our_error_in_paper_time:.1e}.")
-    return lines
-
-
-def _key(r: Row) -> tuple:
-    return (METHODS.index(r.method), r.rank, r.resolution)
-
-
-def _quantity_table(rows: Sequence[Row], quantity: str, adhesive: bool) -> list[str]:
-    mine = [r for r in rows if r.quantity == quantity and (r.c == 1.0) == adhesive]
-    if not mine:
-        return []
-    cases = sorted({(r.nu, r.c) for r in mine})
-    header = "| method | resolution | N / unknowns | " + " | ".join(
-        f"nu={nu:g}" + ("" if adhesive else f", c={c:g}") for nu, c in cases) + " | time, ms: median (range) |"
-    lines = [header, "|" + "---|" * (len(cases) + 4)]
-    for method, resolution in sorted({(r.method, r.resolution) for r in mine},
-                                     key=lambda k: _key(next(r for r in mine if (r.method, r.resolution) == k))):
-        group = [r for r in mine if (r.method, r.resolution) == (method, resolution)]
-        by_case = {(r.nu, r.c): r for r in group}
-        sizes = sorted({r.size for r in group if r.size})
-        size = "" if not sizes else (f"{sizes[0]}" if len(sizes) == 1 else f"{sizes[0]}-{sizes[-1]}")
-        times = [r.seconds for r in group]
-        cells = [("(reference)" if by_case[k].is_reference else _err(by_case[k].error)) if k in by_case else "-"
-                 for k in cases]
-        mark = " (paper's)" if any(r.published for r in group) else ""
-        lines.append(f"| {method} | {resolution}{mark} | {size} | " + " | ".join(cells) +
-                     f" | {_ms(statistics.median(times))} ({_ms(min(times))}-{_ms(max(times))}) |")
-    return lines
-
-
-def render(bench: Benchmark) -> str:
-    """The Markdown record (rows in a fixed order; the timings themselves vary from run to run)."""
-    m = bench.machine
-    lines = [
-        "# Run time against error: the paper's scheme, our solver, the table and the asymptotics",
-        "",
-        "Generated by `python -m numeric.studies.bench` (`hertz-friction bench`); see the module docstring of",
-        "`numeric/studies/bench.py` for what is measured and how. Timings depend on the machine and its load and",
-        "differ between runs: this file is a record, not compared by the tests.",
-        "",
-        f"Machine: {m.get('cores')} cores, OPENBLAS_NUM_THREADS={m.get('blas_threads')}, load average "
-        f"{m.get('load', float('nan')):.1f} when the run ended (the machine was shared with other jobs). "
-        f"Full run: {bench.seconds:.0f} s.",
-        "",
-        "On a shared machine run it as `OPENBLAS_NUM_THREADS=1 python -m numeric.studies.bench`: with the default",
-        "threaded BLAS on the loaded 2-core machine one level-1 solve was measured at 0.48 s against",
-        "0.076 s single-threaded (level 4: 2.1 s against 0.77 s).",
-        "",
-        "## Headline",
-        "",
-    ]
-    for quantity, adhesive in (("mu", False), ("P*", False), ("P*", True)):
-        h = headline([r for r in bench.rows if (r.c == 1.0) == adhesive], quantity)
-        if h is not None:
-            lines += _headline_lines(h, "c = 1" if adhesive else "0 < c < 1")
-    lines += [
-        "",
-        "Equal time: the paper's scheme offers no c for given mu (c is a node of its mesh) and the",
-        "table no p(0) or A; the time ratio for c is therefore not formed.",
-        "",
-        "## Error and reference",
-        "",
-        "Error = |value - reference| / |reference|. What each reference rests on:",
-        "",
-        "- c = 1 (fully adhesive): the closed forms of App. B, P0* = atanh(gamma)/gamma (B4),",
-        "  p0(0) = (kappa/gamma) cosh(pi kappa/2) (4.10), A from Psi1 (4.18) (`asymptotics.adhesive`,",
-        "  checked there against mpmath at 30 digits).",
-        "- 0 < c < 1: our solver at its finest level 4 (`numeric.core.mesh.LEVELS[4]`); A by",
-        "  `indentation_constant` on the level-4 flat solution. Its error is bounded by its distance to",
-        "  level 3 (column `|L4 - L3|`: the levels converge exponentially) and it is cross-checked",
-        "  against a different discretisation, the paper's piecewise-constant scheme Aitken-extrapolated",
-        "  from its three finest meshes h = 0.01, 0.005, 0.0025 (uncertainty: change of the extrapolant",
-        "  when the triple h = 0.02, 0.01, 0.005 is used instead; order: log2 of the ratio of successive",
-        "  differences). Errors of our level 3 and of the table near `|L4 - L3|` are at the reference's",
-        "  own resolution.",
-        "- c for given mu: mu is the reference mu of the case, so the reference c is the case's c",
-        "  (exact up to the reference mu's error times dc/dmu). `flat_punch(mu=)` starts from the",
-        "  table's c and accepts it when the fine level's mu matches to 1e-11 relative, so levels that",
-        "  accept it return the same c as the table route.",
-        "- At c = 0.9 the friction meshes are not nested: at h = 0.02 the refined band of width 0.08",
-        "  around c is extended to the edge x = 1, at finer h it is not (`friction_mesh`). The order",
-        "  drifts, the extrapolation's uncertainty is large and the cross-check there is weaker than the",
-        "  few times 1e-6 reached at c = 0.1 and 0.5.",
-        "",
-        "| nu | gamma | c | mu | P* | p(0) | A | basis | \\|L4 - L3\\| | paper's scheme extrapolated - reference (uncertainty, order): mu; P* |",
-        "|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for ref in bench.references:
-        k = ref.case
-        checks = [x for x in bench.checks if x.case == k]
-        cross = "; ".join(f"{x.extrapolated - x.reference:+.1e} ({x.uncertainty:.0e}, {x.order:.2f})"
-                          for x in checks) or "-"
-        mu = "inf" if math.isinf(ref.mu) else f"{ref.mu:.12f}"
-        lines.append(f"| {k.nu:g} | {k.gamma:.6g} | {k.c:g} | {mu} | {ref.compliance:.12f} | "
-                     f"{ref.central_pressure:.12f} | {ref.A:.12f} | {ref.basis} | {_err(ref.spread)} | {cross} |")
-    if bench.setups:
-        lines += [
-            "",
-            "## Setup cost",
-            "",
-            "First call with every `functools` cache of `numeric` and `asymptotics` cleared (`clear_caches`),",
-            "against the median of later calls of the same case. What is cached: per resolution level the",
-            "reference meshes and their stick-stick and slip-slip Abel blocks (`numeric.core.mesh._reference`,",
-            "c-independent: the blocks for a given c are these times c or sqrt(1 - c^2); only the two cross",
-            "blocks are computed per call) and the adhesive mesh and blocks (`adhesive_discretisation`), the",
-            "Gauss rules, the Chebyshev table (`numeric.core.table._data`), and for the paper's scheme the",
-            "collocation matrix L of (4.3) per (mesh, gamma) (`numeric.scheme._collocation_matrix`), i.e.",
-            "per case. Our level L also solves level L - 1 for its error estimate, so its first call builds",
-            "both levels. The medians in the tables below are for a new case: for the paper's scheme with its",
-            "per-case matrix cache cleared before each run (the repeat column here keeps it).",
-            "",
-            "| case | method | resolution | first call, ms | repeat, ms (median) | setup, ms |",
-            "|---|---|---|---|---|---|",
-        ]
-        for s in bench.setups:
-            lines.append(f"| {s.case.label} | {s.method} | {s.resolution} | {_ms(s.first)} | {_ms(s.repeat)} | "
-                         f"{_ms(max(s.first - s.repeat, 0.0))} |")
-    lines += [
-        "",
-        "## Error of every method at every resolution",
-        "",
-        "Relative errors per case; time = median over the cases of the per-case median run time (range over",
-        "the cases), for a new case with warm case-independent caches. The time of A includes the flat-punch",
-        "solve. The paper's scheme: friction mesh of §4.1 with coarse width h (regula falsi tolerance",
-        "1e-5 (h/0.02)^3: the paper's 1e-5 at h = 0.02); at c = 1 uniform meshes of N intervals and the",
-        "graded meshes (iii), (iv) of §4. Our solver: `flat_punch(nu=, c=, level=L)` (`mu=` for c),",
-        "including the coarser level its error estimate solves; at c = 1 the discrete adhesive solver",
-        "`numeric.core.collocation.solve_adhesive` (`flat_punch(c=1)` returns the closed form, listed separately:",
-        "for P* and p(0) it is the reference itself; A is its quadrature (3.13) of (B3)). Asymptotic",
-        "formulas: (2.28) for mu and, inverted, for c; (2.34) with the first-order shear for P*;",
-        "p(0) = 2/pi + gamma^2 P1(0; c) by (2.32)-(2.33); (2.36) at c = 1.",
-    ]
-    for quantity in QUANTITIES:
-        for adhesive in (False, True):
-            table = _quantity_table(bench.rows, quantity, adhesive)
-            if table:
-                lines += ["", f"### {QUANTITY_TEXT[quantity]}, {'c = 1' if adhesive else '0 < c < 1'}", ""] + table
-    return "\n".join(lines) + "\n"
-
-
-def _curve(rows: Sequence[Row], method: str) -> tuple[list[float], list[float], list[str]]:
-    """Median time over cases and worst error over cases per resolution of ``method``, coarse to fine."""
-    groups: dict[str, list[Row]] = {}
-    for r in rows:
-        if r.method == method and not r.is_reference:
-            groups.setdefault(r.resolution, []).append(r)
-    keys = sorted(groups, key=lambda k: groups[k][0].rank)
-    keys = [k for k in keys if max(r.error for r in groups[k]) > 0.0]
-    return ([statistics.median(r.seconds for r in groups[k]) for k in keys],
-            [max(r.error for r in groups[k]) for k in keys], keys)
-
-
-_STYLE = {SCHEME: ("tab:red", "o"), SCHEME_GRADED: ("tab:orange", "D"), SOLVER: ("tab:blue", "s"),
-          CLOSED_FORM: ("tab:cyan", "P"), TABLE: ("tab:green", "^"), ASYMPTOTIC: ("tab:purple", "v")}
-
-
-def plot(bench: Benchmark, path: Path) -> None:
-    """Log-log error against run time: mu and P* (0 < c < 1, reference level 4), P* at c = 1 (exact)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    panels = [("mu", False, "mu for given c, 0 < c < 1 (reference: level 4)"),
-              ("P*", False, "compliance P*, 0 < c < 1 (reference: level 4)"),
-              ("P*", True, "compliance P*, c = 1 (reference: exact (B4))")]
-    fig, axes = plt.subplots(1, 3, figsize=(17, 6.2), sharey=True)
-    handles = {}
-    for ax, (quantity, adhesive, title) in zip(axes, panels):
-        rows = [r for r in bench.rows if r.quantity == quantity and (r.c == 1.0) == adhesive]
-        for method in METHODS:
-            mine = [r for r in rows if r.method == method and r.error > 0.0 and not r.is_reference]
-            if not mine:
-                continue
-            colour, marker = _STYLE[method]
-            ax.scatter([r.seconds for r in mine], [r.error for r in mine], s=10, color=colour, alpha=0.25,
-                       marker=marker, linewidths=0)
-            t, e, labels = _curve(rows, method)
-            (handles[method],) = ax.plot(t, e, color=colour, marker=marker, ms=6, lw=1.8, label=method)
-            if method in (SCHEME, SOLVER):
-                for k, (x, y, label) in enumerate(zip(t, e, labels)):  # alternate above and below the curve
-                    ax.annotate(label.replace("level ", "L"), (x, y), textcoords="offset points",
-                                xytext=(4, 5 if k % 2 == 0 else -13), fontsize=8, color=colour)
-        ax.axhline(TARGET, color="grey", ls=":", lw=1)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_title(title, fontsize=11)
-        ax.set_xlabel("run time per solve, s (median over cases)")
-        ax.grid(True, which="major", alpha=0.3)
-    axes[0].set_ylabel("relative error (worst over cases; faint: each case)")
-    if handles:
-        axes[0].legend(handles=[handles[m] for m in METHODS if m in handles], fontsize=9, loc="lower left")
-    fig.suptitle("Flat punch with friction [S75]: error against run time "
-                 f"({bench.machine.get('cores')} cores; dotted: {TARGET:.0e})", fontsize=12)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-
-
-def _default_output() -> Path | None:
-    """``derivations/`` of the source tree (editable install), else None."""
-    candidate = Path(__file__).resolve().parents[2] / "derivations"
-    return candidate if candidate.is_dir() else None
-
-
-def main(argv: list[str] | None = None) -> int:
-    """Run the benchmark; write ``benchmark.md`` and ``benchmark.png`` (full run) and print the Markdown."""
-    parser = argparse.ArgumentParser(prog="hertz-friction bench", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true", help="nu = 0.25, c = 0.5 and 1 only, coarser meshes (~1 min)")
-    parser.add_argument("--output", type=Path, default=None,
-                        help="directory for benchmark.md and benchmark.png (default: derivations/ for the full run; "
-                             "the quick run only prints unless given)")
-    parser.add_argument("--no-plot", action="store_true", help="do not draw benchmark.png")
-    args = parser.parse_args(argv)
-    output = args.output if args.output is not None or args.quick else _default_output()
-    bench = run(QUICK if args.quick else FULL, progress=lambda message: print(message, file=sys.stderr))
-    text = render(bench)
-    if output is not None:
-        output.mkdir(parents=True, exist_ok=True)
-        (output / "benchmark.md").write_text(text, encoding="utf-8")
-        if not args.no_plot:
-            plot(bench, output / "benchmark.png")
-    sys.stdout.write(text)
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

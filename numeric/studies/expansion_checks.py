@@ -18,10 +18,9 @@ Each check compares a closed form of ``asymptotics.first_order`` (or
 The second-order columns (``asymptotics.second_order``) are filled only once that module's
 generated table exists (its quadratures take seconds a point); until then they are None.
 
-``expansion_study(fast)`` runs them all; ``expansion_tables(fast)`` renders them as
-deterministic Markdown (fixed formats, errors to 2 significant digits, rows sorted, no
-timestamps) for ``derivations/section_2_3.md``; ``expansion_errors`` and
-``plot_expansion_errors`` give the log-log figure "error against gamma". ``fast=True`` uses
+``expansion_study(fast)`` runs them all and ``expansion_errors`` reduces them to the worst
+error at each gamma; ``numeric.studies.expansion_report`` renders them as deterministic
+Markdown for ``derivations/section_2_3.md`` and as the log-log figure "error against gamma". ``fast=True`` uses
 the Chebyshev table (``numeric.core.table``, mu to 7e-12 relative, P* to 5e-14) for mu and
 P*, level-2 solutions for the stresses and no solves near c_max (seconds); ``fast=False``
 solves everything at level 3 (1e-11) and adds c = 1e-4, 1 - c down to 1e-6 and the c_max
@@ -73,11 +72,8 @@ __all__ = [
     "ExpansionStudy",
     "ExpansionErrors",
     "expansion_study",
-    "expansion_tables",
-    "render_markdown",
     "observed_orders",
     "expansion_errors",
-    "plot_expansion_errors",
 ]
 
 #: Poisson's ratios of the study: gamma = (1 - 2 nu)/(2 - 2 nu) from 0.0196 to 2/3 (2.2)
@@ -414,7 +410,7 @@ def _stick_shear(fast: bool, solutions: dict) -> tuple[StickShearRow, ...]:
 
 
 # ----------------------------------------------------------------------------------------
-# orders, the study, rendering
+# orders, the study, the worst errors
 
 
 def observed_orders(rows, value: str, quantity: str) -> tuple[OrderRow, ...]:
@@ -459,88 +455,6 @@ def expansion_study(fast: bool) -> ExpansionStudy:
     )
 
 
-def _e(v: float) -> str:
-    """An error to 2 significant digits."""
-    return f"{v:.1e}"
-
-
-def _matrix(rows, value: str, title: str, orders: tuple[OrderRow, ...] | None = None) -> list[str]:
-    """Rows c, columns gamma (nu), cells row.<value>; the first two slopes at the right."""
-    gammas = sorted({(r.gamma, r.nu) for r in rows})
-    cells = {(r.c, r.gamma): getattr(r, value) for r in rows}
-    head = "| c | " + " | ".join(f"γ = {g:.4f} (ν = {nu:g})" for g, nu in gammas) + " |"
-    if orders:
-        head += " order (γ₁, γ₂) | order (γ₂, γ₃) |"
-    lines = [f"**{title}**", "", head, "|" + "---|" * (len(gammas) + 1 + (2 if orders else 0))]
-    slope = {o.c: o.slopes for o in orders or ()}
-    for c in sorted({r.c for r in rows}):
-        line = f"| {c:g} | " + " | ".join(_e(cells[(c, g)]) if (c, g) in cells else "" for g, _ in gammas) + " |"
-        if orders:
-            line += f" {slope[c][0]:.2f} | {slope[c][1]:.2f} |"
-        lines.append(line)
-    return lines + [""]
-
-
-def render_markdown(study: ExpansionStudy) -> str:
-    """Deterministic Markdown tables of an ``ExpansionStudy`` (errors to 2 significant digits)."""
-    mode = "fast mode (table μ and P*, level-2 stresses)" if study.fast else "full mode (level-3 solutions)"
-    out = [f"### Checks of the expansions of §2.3 against the full solution ({mode})", ""]
-    law = study.friction_law
-    out += _matrix(law, "relative_error", "(2.28): relative error (γ f0(c) − μ)/μ of the first-order law")
-    out += _matrix(law, "scaled", "(2.28): relative error / γ², with the observed order in γ",
-                   observed_orders(law, "relative_error", "(2.28)"))
-    if law[0].scaled_second is not None:
-        out += _matrix(law, "scaled_second", "second order μ/γ = f0 + γ² f2: relative error / γ⁴, with the observed order",
-                       observed_orders(law, "relative_error_second", "second order"))
-    out += ["**(2.29), μ → 0: c from the full μ(c)**", "",
-            "| γ | c | μ (full) | 4 exp(−γ/μ)/c − 1 | c_small_mu(4 terms)/c − 1 | μ log(4/c)/γ − 1 | same / γ² |",
-            "|---|---|---|---|---|---|---|"]
-    out += [f"| {r.gamma:.4f} | {r.c:.0e} | {r.mu:.6g} | {_e(r.relative_error_leading)} | "
-            f"{_e(r.relative_error_series)} | {_e(r.exponent_defect)} | {r.exponent_defect / r.gamma**2:.3f} |"
-            for r in study.small_mu] + [""]
-    out += ["**(2.29), μ → ∞: 1 − c from the full μ(c)**", "",
-            "| γ | 1 − c | μ (full) | 2 exp(−πμ/γ)/(1 − c) − 1 | c_large_mu(4 terms): same | "
-            "πμ/(γ log(2/(1 − c))) − 1 | (μ − γf0)/(μ (γf0)²) | (P* − 1)/γ² (→ 1/3 at c = 1) |",
-            "|---|---|---|---|---|---|---|---|"]
-    out += [f"| {r.gamma:.4f} | {r.one_minus_c:.0e} | {r.mu:.6g} | {_e(r.relative_error_leading)} | "
-            f"{_e(r.relative_error_series)} | {_e(r.exponent_defect)} | {r.law_scaled:.3f} | {r.compliance_coefficient:.5f} |"
-            for r in study.large_mu] + [""]
-    if study.largest_stick:
-        out += ["**Largest stick radius: μ(c) of the full solution (level 2) as c → c_max(γ)**", "",
-                "| γ | 1 − c | μ | 1/μ | solver error of μ |", "|---|---|---|---|---|"]
-        out += [f"| {r.gamma:.4f} | {r.one_minus_c:.3e} | {r.mu:.5g} | {1.0 / r.mu:.4g} | {_e(r.error)} |"
-                for r in study.largest_stick] + [""]
-        out += ["**c_max(γ) from 1/μ → 0 (quadratic through the three largest c)**", "",
-                "| γ | κ = (2/π) atanh γ | 1 − c_max | (1 − c_max) exp(π/κ) |", "|---|---|---|---|"]
-        out += [f"| {r.gamma:.4f} | {r.kappa:.6f} | {r.one_minus_c_max:.4e} | {r.ratio:.3f} |"
-                for r in study.largest_stick_estimates] + [""]
-    else:
-        out += ["(The largest stick radius c_max(γ) is studied in full mode only.)", ""]
-    shear = study.stick_shear
-    out += _matrix(shear, "max_difference", "(2.31): max over the stick zone of |q/(μp) − (1 − ψ)|")
-    out += _matrix(shear, "scaled", "(2.31): that maximum / γ², with the observed order",
-                   observed_orders(shear, "max_difference", "(2.31)"))
-    comp = study.compliance
-    out += _matrix(comp, "error", "(2.34): error P*₁ − P* of the first-order compliance")
-    out += _matrix(comp, "scaled", "(2.34): error / γ⁴, with the observed order",
-                   observed_orders(comp, "error", "(2.34)"))
-    if comp[0].scaled_second is not None:
-        out += _matrix(comp, "scaled_second", "P* = 1 + γ² P2 + γ⁴ P4: error / γ⁶, with the observed order",
-                       observed_orders(comp, "error_second", "second order"))
-    out += ["**(2.36): 1 + γ²/3 against the adhesive atanh(γ)/γ (B4)**", "",
-            "| γ | atanh(γ)/γ | error | error / γ⁴ (→ −1/5) |", "|---|---|---|---|"]
-    out += [f"| {r.gamma:.4f} | {r.exact:.10f} | {_e(r.error)} | {r.scaled:.4f} |" for r in study.adhesive_compliance]
-    return "\n".join(out) + "\n"
-
-
-def expansion_tables(fast: bool) -> str:
-    """Markdown of every check of §2.3 (``expansion_study`` then ``render_markdown``).
-
-    ``fast=True`` takes seconds, ``fast=False`` minutes (level-3 solves, the c_max study).
-    """
-    return render_markdown(expansion_study(fast))
-
-
 def expansion_errors(study: ExpansionStudy) -> ExpansionErrors:
     """Worst |error| over the stick radii of the study at each gamma, per approximation."""
 
@@ -556,39 +470,3 @@ def expansion_errors(study: ExpansionStudy) -> ExpansionErrors:
     _, adhesive = worst(study.adhesive_compliance, "error")
     stick_gamma, stick = worst(study.stick_shear, "max_difference")
     return ExpansionErrors(gamma, law, law2, comp, comp2, adhesive, stick_gamma, stick)
-
-
-def plot_expansion_errors(path: str, study: ExpansionStudy | None = None, *, fast: bool = True) -> None:
-    """Log-log figure of ``expansion_errors`` against gamma, with gamma^2 and gamma^4 guides."""
-    import matplotlib
-    import matplotlib.ticker
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    e = expansion_errors(study if study is not None else expansion_study(fast))
-    fig, ax = plt.subplots(figsize=(6.4, 4.8))
-    ax.loglog(e.gamma, e.friction_law, "o-", label="(2.28) μ = γ f0(c): relative error")
-    ax.loglog(e.stick_gamma, e.stick_shear, "s-", label="(2.31) q/(μp) = 1 − ψ: max difference")
-    if e.friction_law_second is not None:
-        ax.loglog(e.gamma, e.friction_law_second, "^-", label="μ = γ(f0 + γ² f2): relative error")
-        ax.loglog(e.gamma, e.compliance_second, "x-", label="P* = 1 + γ² P2 + γ⁴ P4: error")
-    ax.loglog(e.gamma, e.compliance, "d-", label="(2.34) P* first order: error")
-    ax.loglog(e.gamma, e.adhesive_compliance, "v-", label="(2.36) 1 + γ²/3 vs atanh(γ)/γ")
-    g = np.geomspace(e.gamma[0], e.gamma[-1], 50)
-    guides = ((2, e.stick_shear[0] / 3.0), (4, e.compliance[0] / 3.0))
-    if e.compliance_second is not None:
-        guides += ((6, e.compliance_second[0] / 3.0),)
-    for n, below in guides:  # slope guides a factor 3 below the first point of a curve of that order
-        ax.loglog(g, below * (g / g[0]) ** n, "k:", lw=1)
-        ax.annotate("γ" + "⁰¹²³⁴⁵⁶"[n], (g[-1], below * (g[-1] / g[0]) ** n), fontsize=8, ha="left", va="center")
-    ax.xaxis.set_major_locator(matplotlib.ticker.FixedLocator([0.02, 0.05, 0.1, 0.2, 0.5]))
-    ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
-    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-    ax.set_xlabel("γ = (1 − 2ν)/(2 − 2ν)")
-    ax.set_ylabel("worst |error| over c")
-    ax.set_title("Expansions of [S75] §2.3 against the full solution")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)

@@ -516,22 +516,7 @@ class Contact:
         >>> [round(float(v) / 1e6, 6) for v in g.pressure]   # (2/pi) E* (a/R) sqrt(1 - r^2/a^2), MPa
         [60.021088, 42.441318]
         """
-        xs, ys = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
-        if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ys))):
-            raise ValueError("x and y (grid coordinates, m) must be finite")
-        r = np.hypot(xs, ys)
-        tau = np.asarray(self.shear(r), dtype=float)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            cos_t = np.where(r > 0.0, xs / np.where(r > 0.0, r, 1.0), 0.0)
-            sin_t = np.where(r > 0.0, ys / np.where(r > 0.0, r, 1.0), 0.0)
-        return GridSolution(
-            x=read_only(xs), y=read_only(ys), radius=read_only(r),
-            pressure=read_only(self.pressure(r)), shear=read_only(tau),
-            shear_x=read_only(tau * cos_t), shear_y=read_only(tau * sin_t),
-            slip_rate=read_only(self.slip_rate(r)),
-            contact_radius=self.contact_radius, stick_radius=self.stick_radius,
-            approach=self.approach, load=self.load,
-        )
+        return _on_grid(self, x, y)
 
     @property
     def ratios(self) -> dict[str, float | None]:
@@ -550,46 +535,75 @@ class Contact:
 
     def to_dict(self) -> dict:
         """The results as a JSON-ready dict (SI units; infinite values become None)."""
-        out = {
-            "contact_radius": self.contact_radius,
-            "stick_radius": self.stick_radius,
-            "stick_fraction": self.c,
-            "approach": self.approach,
-            "load": self.load,
-            "stiffness": self.stiffness,
-            "mean_pressure": self.mean_pressure,
-            "max_pressure": self.max_pressure,
-            "max_pressure_radius": self.max_pressure_radius,
-            "max_shear": self.max_shear,
-            "max_shear_radius": self.max_shear_radius,
-            "mu": self.mu,
-            "compliance": self.compliance,
-            "flat_compliance": self.flat_compliance,
-            "indentation_constant": self.A,
-        }
-        out = {k: _finite_or_none(v) for k, v in out.items()}
-        if self.mu == 0.0:
-            out["frictionless"] = dict(out)
-        elif self.frictionless is not None:
-            out["frictionless"] = {k: v for k, v in self.frictionless.to_dict().items() if k in out}
-        if "frictionless" in out:
-            out["ratios"] = {k: _finite_or_none(v) for k, v in self.ratios.items()}
-        pair = self.materials
-        kal = pair.kalker
-        out["materials"] = {
-            "half_space": {"E": pair.half_space.E, "G": pair.half_space.G, "nu": pair.half_space.nu},
-            "indenter": None if pair.indenter is None else
-            {"E": pair.indenter.E, "G": pair.indenter.G, "nu": pair.indenter.nu},
-            "reduced_modulus": pair.reduced_modulus,
-            "gamma": pair.gamma,
-            "dundurs_beta": pair.dundurs_beta,
-            "kalker": {"G": kal.G, "nu": kal.nu, "K": kal.K},
-        }
-        out["indenter"] = _shape_dict(self.shape)
-        out["error"] = self.error
-        out["route"] = self.route
-        out["units"] = {"length": "m", "force": "N", "stress": "Pa", "stiffness": "N/m"}
-        return out
+        return _contact_dict(self)
+
+
+def _on_grid(contact: Contact, x: ArrayLike, y: ArrayLike) -> GridSolution:
+    """``Contact.on_grid``: the fields at (x, y), the shear split into its Cartesian components."""
+    xs, ys = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+    if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ys))):
+        raise ValueError("x and y (grid coordinates, m) must be finite")
+    r = np.hypot(xs, ys)
+    tau = np.asarray(contact.shear(r), dtype=float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cos_t = np.where(r > 0.0, xs / np.where(r > 0.0, r, 1.0), 0.0)
+        sin_t = np.where(r > 0.0, ys / np.where(r > 0.0, r, 1.0), 0.0)
+    return GridSolution(
+        x=read_only(xs), y=read_only(ys), radius=read_only(r),
+        pressure=read_only(contact.pressure(r)), shear=read_only(tau),
+        shear_x=read_only(tau * cos_t), shear_y=read_only(tau * sin_t),
+        slip_rate=read_only(contact.slip_rate(r)),
+        contact_radius=contact.contact_radius, stick_radius=contact.stick_radius,
+        approach=contact.approach, load=contact.load,
+    )
+
+
+def _contact_dict(contact: Contact) -> dict:
+    """``Contact.to_dict``: the scalar results, the frictionless ones and the ratios, then the
+    materials, the indenter, the error, the route and the units."""
+    out = {
+        "contact_radius": contact.contact_radius,
+        "stick_radius": contact.stick_radius,
+        "stick_fraction": contact.c,
+        "approach": contact.approach,
+        "load": contact.load,
+        "stiffness": contact.stiffness,
+        "mean_pressure": contact.mean_pressure,
+        "max_pressure": contact.max_pressure,
+        "max_pressure_radius": contact.max_pressure_radius,
+        "max_shear": contact.max_shear,
+        "max_shear_radius": contact.max_shear_radius,
+        "mu": contact.mu,
+        "compliance": contact.compliance,
+        "flat_compliance": contact.flat_compliance,
+        "indentation_constant": contact.A,
+    }
+    out = {k: _finite_or_none(v) for k, v in out.items()}
+    if contact.mu == 0.0:
+        out["frictionless"] = dict(out)
+    elif contact.frictionless is not None:
+        out["frictionless"] = {k: v for k, v in contact.frictionless.to_dict().items() if k in out}
+    if "frictionless" in out:
+        out["ratios"] = {k: _finite_or_none(v) for k, v in contact.ratios.items()}
+    out["materials"] = _materials_dict(contact.materials)
+    out["indenter"] = _shape_dict(contact.shape)
+    out["error"] = contact.error
+    out["route"] = contact.route
+    out["units"] = {"length": "m", "force": "N", "stress": "Pa", "stiffness": "N/m"}
+    return out
+
+
+def _materials_dict(pair: MaterialPair) -> dict:
+    kal = pair.kalker
+    return {
+        "half_space": {"E": pair.half_space.E, "G": pair.half_space.G, "nu": pair.half_space.nu},
+        "indenter": None if pair.indenter is None else
+        {"E": pair.indenter.E, "G": pair.indenter.G, "nu": pair.indenter.nu},
+        "reduced_modulus": pair.reduced_modulus,
+        "gamma": pair.gamma,
+        "dundurs_beta": pair.dundurs_beta,
+        "kalker": {"G": kal.G, "nu": kal.nu, "K": kal.K},
+    }
 
 
 def _ratio(value: float, reference: float) -> float | None:
@@ -696,6 +710,21 @@ def indent(
     >>> abs(s.contact_radius / a - 1) < 1e-12, abs(s.max_pressure / (3 * 100 / (2 * math.pi * a**2)) - 1) < 1e-12
     (True, True)
     """
+    mu_value, given, value = _checked(shape, half_space, indenter, mu, load, approach)
+    pair = MaterialPair(half_space, indenter)
+    sol = _dimensionless(shape, mu_value, pair.gamma, level)
+    scaled = _scaled(shape, sol, pair.modulus, given, value)
+    a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
+    _check_strain(max(delta / a, scaled.edge_slope, P / (math.pi * a * a) / pair.reduced_modulus), given, value)
+    frictionless = None
+    if with_frictionless and mu_value != 0.0:
+        frictionless = indent(shape, half_space, mu=0.0, load=load, approach=approach, indenter=indenter,
+                              level=level, with_frictionless=False)
+    return _contact(shape, pair, mu_value, sol, scaled, frictionless)
+
+
+def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, str, float]:
+    """The inputs of ``indent`` checked: mu, and which of load and approach was given, with its value."""
     if not isinstance(shape, (FlatPunch, PowerLaw)):
         raise ValueError(f"shape must be a FlatPunch or a PowerLaw, got {shape!r}")
     if not isinstance(half_space, Elastic) or not (indenter is None or isinstance(indenter, Elastic)):
@@ -704,53 +733,65 @@ def indent(
         raise ValueError("give exactly one of load (N) or approach (m)")
     mu_value = float(check_mu(mu))
     if load is not None:
-        given, value = "load", _positive(load, "load", "normal force, N")
-    else:
-        given, value = "approach", _positive(approach, "approach", "approach of the bodies, m")
-    pair = MaterialPair(half_space, indenter)
-    gamma = pair.gamma
-    M = pair.modulus
+        return mu_value, "load", _positive(load, "load", "normal force, N")
+    return mu_value, "approach", _positive(approach, "approach", "approach of the bodies, m")
+
+
+def _dimensionless(shape: FlatPunch | PowerLaw, mu: float, gamma: float,
+                   level: int) -> FlatPunchSolution | PowerLawSolution:
+    """The dimensionless solution for |gamma_bar| (the mirror image for gamma_bar < 0, module docstring)."""
     if isinstance(shape, FlatPunch):
-        sol = flat_punch(mu=mu_value, gamma=abs(gamma), level=level)
-        P_star = P0_star = sol.compliance
-        A = None
-        a = shape.radius
+        return flat_punch(mu=mu, gamma=abs(gamma), level=level)
+    return power_law(shape.n, mu=mu, gamma=abs(gamma), level=level)
+
+
+@dataclass(frozen=True, slots=True)
+class _Scaled:
+    """The dimensionless solution at one load or approach: a, delta, P and the profile's slope at r = a."""
+
+    contact_radius: float
+    approach: float
+    load: float
+    edge_slope: float
+
+
+def _scaled(shape: FlatPunch | PowerLaw, sol: FlatPunchSolution | PowerLawSolution, M: float, given: str,
+            value: float) -> _Scaled:
+    """a, delta and P from the given load or approach, by (2.4) and, for a power law, (3.2)."""
+    if isinstance(shape, FlatPunch):
+        a, P_star = shape.radius, sol.compliance
         if given == "load":
             P, delta = value, value / (4.0 * M * a * P_star)  # (2.4)
         else:
             delta, P = value, 4.0 * M * a * P_star * value  # (2.4)
-        slope = 0.0
-        breakpoints = sol.breakpoints
+        return _Scaled(a, delta, P, 0.0)
+    n, k, P_star, A = shape.n, shape.k, sol.compliance, sol.A  # (3.17)
+    if given == "load":
+        P = value
+        a = (P / (4.0 * M * P_star * n * k * A)) ** (1.0 / (n + 1.0))  # (2.4) with (3.2)
+        delta = n * k * A * a**n  # (3.2)
     else:
-        sol = power_law(shape.n, mu=mu_value, gamma=abs(gamma), level=level)
-        n, k = shape.n, shape.k
-        P_star, P0_star, A = sol.compliance, sol.flat.compliance, sol.A  # (3.17)
-        if given == "load":
-            P = value
-            a = (P / (4.0 * M * P_star * n * k * A)) ** (1.0 / (n + 1.0))  # (2.4) with (3.2)
-            delta = n * k * A * a**n  # (3.2)
-        else:
-            delta = value
-            a = (delta / (n * k * A)) ** (1.0 / n)  # (3.2)
-            P = 4.0 * M * a * P_star * delta  # (2.4)
-        slope = n * k * a ** (n - 1.0)  # dz/dr at r = a
-        breakpoints = sol.flat.breakpoints
-    _check_strain(max(delta / a, slope, P / (math.pi * a * a) / pair.reduced_modulus), given, value)
-    stiffness = 4.0 * M * a * P0_star  # = ((n+1)/n) P/delta by (3.17); flat punch: P/delta
+        delta = value
+        a = (delta / (n * k * A)) ** (1.0 / n)  # (3.2)
+        P = 4.0 * M * a * P_star * delta  # (2.4)
+    return _Scaled(a, delta, P, n * k * a ** (n - 1.0))  # dz/dr at r = a
+
+
+def _contact(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, sol: FlatPunchSolution | PowerLawSolution,
+             scaled: _Scaled, frictionless: Contact | None) -> Contact:
+    """The ``Contact``: stiffness, the maxima of the tractions in Pa, and the solver's error and route."""
+    flat = sol.flat if isinstance(sol, PowerLawSolution) else sol
+    a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
+    M = pair.modulus
+    stiffness = 4.0 * M * a * flat.compliance  # = ((n+1)/n) P/delta by (3.17); flat punch: P/delta
     scale = M * delta / a  # (2.1)
-    p_max, p_at = _maximum(sol.pressure, breakpoints)
-    q_max, q_at = _maximum(sol.shear, breakpoints)
-    frictionless = None
-    if with_frictionless and mu_value != 0.0:
-        frictionless = indent(shape, half_space, mu=0.0, load=load, approach=approach, indenter=indenter,
-                              level=level, with_frictionless=False)
-    flat_error = sol.flat.error if isinstance(sol, PowerLawSolution) else sol.error
-    route = sol.flat.route if isinstance(sol, PowerLawSolution) else sol.route
+    p_max, p_at = _maximum(sol.pressure, flat.breakpoints)
+    q_max, q_at = _maximum(sol.shear, flat.breakpoints)
     return Contact(
-        shape=shape, materials=pair, mu=mu_value, c=sol.c, gamma=gamma, compliance=P_star,
-        flat_compliance=P0_star, A=A, contact_radius=a, stick_radius=sol.c * a, approach=delta, load=P,
-        stiffness=stiffness, mean_pressure=P / (math.pi * a * a),
+        shape=shape, materials=pair, mu=mu, c=sol.c, gamma=pair.gamma, compliance=sol.compliance,
+        flat_compliance=flat.compliance, A=sol.A if isinstance(sol, PowerLawSolution) else None, contact_radius=a,
+        stick_radius=sol.c * a, approach=delta, load=P, stiffness=stiffness, mean_pressure=P / (math.pi * a * a),
         max_pressure=scale * p_max, max_pressure_radius=p_at * a,
         max_shear=scale * q_max, max_shear_radius=None if q_at is None else q_at * a,
-        error=flat_error, route=route, frictionless=frictionless, _solution=sol,
+        error=flat.error, route=flat.route, frictionless=frictionless, _solution=sol,
     )

@@ -357,11 +357,24 @@ def solve_friction(
         sol = solve_at_mu(mesh, mu, gamma=g)
         return sol.mu_star - mu, sol
 
-    # mu*(mu) has poles (a midpoint pressure crossing zero) besides the root, so brackets are
-    # sought outward from the small-gamma eigenvalue (2.28) on a grid of ratio 1.2 and each
-    # fall of mu*(mu) - mu through zero is tried in turn; only a bracket on which regula
-    # falsi reaches |mu* - mu| < tol is accepted, so a pole cannot pass for the root.
     guess = g * float(mu_over_gamma(mesh.c))
+    sol, last_failure = _bracketed_root(excess, guess, tol, max_iterations)
+    if sol is not None:
+        return sol
+    raise RuntimeError(
+        f"the paper's scheme finds no eigenvalue on this mesh (c = {c}, gamma = {g:.6g}, h = {h}) "
+        f"for mu within a factor 1.2**40 of {guess:.3g}: {last_failure}"
+    )
+
+
+def _bracketed_root(excess, guess: float, tol: float, max_iterations: int) -> tuple[SchemeSolution | None, str]:
+    """The eigenvalue from the first bracket on which regula falsi converges, or (None, why not).
+
+    mu*(mu) has poles (a midpoint pressure crossing zero) besides the root, so brackets are
+    sought outward from the small-gamma eigenvalue (2.28) on a grid of ratio 1.2 and each
+    fall of mu*(mu) - mu through zero is tried in turn; only a bracket on which regula
+    falsi reaches |mu* - mu| < tol is accepted, so a pole cannot pass for the root.
+    """
     grid: dict[int, float] = {}
     last_failure = "no fall of mu*(mu) - mu through zero"
     for step in range(41):
@@ -372,12 +385,9 @@ def solve_friction(
                     lo, hi = guess * 1.2**left, guess * 1.2**(left + 1)
                     sol = _regula_falsi(excess, lo, grid[left], hi, grid[left + 1], tol, max_iterations)
                     if sol.converged:
-                        return sol
+                        return sol, ""
                     last_failure = sol.message
-    raise RuntimeError(
-        f"the paper's scheme finds no eigenvalue on this mesh (c = {c}, gamma = {g:.6g}, h = {h}) "
-        f"for mu within a factor 1.2**40 of {guess:.3g}: {last_failure}"
-    )
+    return None, last_failure
 
 
 def _regula_falsi(excess, lo: float, f_lo: float, hi: float, f_hi: float, tol: float, max_iterations: int) -> SchemeSolution:

@@ -126,6 +126,19 @@ class _EdgeModel:
     b: float
     s_ref: float
 
+    @classmethod
+    def fit(cls, values: np.ndarray, s_e: float, mu: float, gamma: float) -> _EdgeModel:
+        """The local form fitted to f at s = s_e and 4 s_e: K s^(alpha - 1/2), tan(pi alpha) = mu gamma,
+        or s^(-1/2) Re[K s^(i kappa/2)] when fully adhesive (mu = inf)."""
+        if math.isinf(mu):  # adhesive edge: s^(-1/2) Re[K s^(i kappa/2)]
+            omega = math.atanh(gamma) / math.pi  # kappa/2
+            g1, g2 = values * np.sqrt(np.array([s_e, 4.0 * s_e]))
+            ell = math.log(4.0)
+            sinc = ell * np.sinc(omega * ell / np.pi)
+            return cls("log-periodic", omega, float(g1), float((g2 - g1 * math.cos(omega * ell)) / sinc), s_e)
+        beta = math.atan(mu * gamma) / math.pi - 0.5  # (1 - x)^(alpha - 1/2)
+        return cls("power", beta, float(values[0] / s_e**beta), 0.0, s_e)
+
     def integral(self, s: np.ndarray) -> np.ndarray:
         """int_{1-s}^1 f dt for 0 <= s <= s_e (t^(-n) = 1 + O(s) is dropped: O(s^(3/2)))."""
         s = np.asarray(s, dtype=float)
@@ -143,51 +156,50 @@ class _EdgeModel:
         return np.where(s > 0.0, np.sqrt(np.maximum(s, 0.0)) * (re_part + im_part), 0.0)
 
 
+def _checked_constants(flat: FlatStresses) -> tuple[float, float, float]:
+    """gamma, mu and c of ``flat``, with a ValueError naming what it lacks or what is out of range."""
+    for name in ("gamma", "mu", "c", "compliance", "breakpoints", "pressure", "shear"):
+        if not hasattr(flat, name):
+            raise ValueError(f"flat must provide '{name}' (see FlatStresses)")
+    gamma, mu, c = float(flat.gamma), float(flat.mu), float(flat.c)
+    if not 0.0 <= gamma < 1.0:
+        raise ValueError(f"flat.gamma must lie in [0, 1), got {flat.gamma!r}")
+    if not mu >= 0.0:
+        raise ValueError(f"flat.mu must be >= 0 (inf when adhesive), got {flat.mu!r}")
+    if not 0.0 <= c <= 1.0:
+        raise ValueError(f"flat.c must lie in [0, 1], got {flat.c!r}")
+    return gamma, mu, c
+
+
+def _sampled_knots(breakpoints: np.ndarray) -> np.ndarray:
+    """Knots 0 ... x_e: the breakpoints at least EDGE_GAP from 1, graded further toward 1 by factors
+    of 4 if they stop early (x_e = 1 - s_e, s_e in [EDGE_GAP, 4 EDGE_GAP))."""
+    bps = np.asarray(breakpoints, dtype=float)
+    if (bps.ndim != 1 or bps.size < 2 or bps[0] != 0.0 or bps[-1] != 1.0
+            or not np.all(np.diff(bps) > 0.0)):
+        raise ValueError("flat.breakpoints must increase strictly from 0 to 1")
+    inner = bps[(bps < 1.0) & (1.0 - bps >= EDGE_GAP)]
+    extra = []
+    s = 1.0 - inner[-1]
+    while s >= 4.0 * EDGE_GAP:  # grade toward 1 if the given breakpoints stop early
+        s /= 4.0
+        extra.append(1.0 - s)
+    return np.concatenate([inner, extra]) if extra else inner
+
+
 class _Flat:
     """A validated flat solution with its sampled region [0, x_e] and edge models."""
 
     def __init__(self, flat: FlatStresses):
-        for name in ("gamma", "mu", "c", "compliance", "breakpoints", "pressure", "shear"):
-            if not hasattr(flat, name):
-                raise ValueError(f"flat must provide '{name}' (see FlatStresses)")
         self.flat = flat
-        self.gamma = float(flat.gamma)
-        self.mu = float(flat.mu)
-        self.c = float(flat.c)
-        if not 0.0 <= self.gamma < 1.0:
-            raise ValueError(f"flat.gamma must lie in [0, 1), got {flat.gamma!r}")
-        if not self.mu >= 0.0:
-            raise ValueError(f"flat.mu must be >= 0 (inf when adhesive), got {flat.mu!r}")
-        if not 0.0 <= self.c <= 1.0:
-            raise ValueError(f"flat.c must lie in [0, 1], got {flat.c!r}")
-        bps = np.asarray(flat.breakpoints, dtype=float)
-        if (bps.ndim != 1 or bps.size < 2 or bps[0] != 0.0 or bps[-1] != 1.0
-                or not np.all(np.diff(bps) > 0.0)):
-            raise ValueError("flat.breakpoints must increase strictly from 0 to 1")
-        inner = bps[(bps < 1.0) & (1.0 - bps >= EDGE_GAP)]
-        extra = []
-        s = 1.0 - inner[-1]
-        while s >= 4.0 * EDGE_GAP:  # grade toward 1 if the given breakpoints stop early
-            s /= 4.0
-            extra.append(1.0 - s)
-        self.knots = np.concatenate([inner, extra]) if extra else inner  # 0 ... x_e
+        self.gamma, self.mu, self.c = _checked_constants(flat)
+        self.knots = _sampled_knots(flat.breakpoints)  # 0 ... x_e
         self.x_e = float(self.knots[-1])
         self.s_e = 1.0 - self.x_e
         self.p_centre = float(np.asarray(flat.pressure(np.zeros(1)), dtype=float).ravel()[0])
         probe = np.array([self.x_e, 1.0 - 4.0 * self.s_e])
-        self.edge_p = self._edge_model(np.asarray(flat.pressure(probe), dtype=float))
-        self.edge_q = self._edge_model(np.asarray(flat.shear(probe), dtype=float))
-
-    def _edge_model(self, values: np.ndarray) -> _EdgeModel:
-        s_e = self.s_e
-        if math.isinf(self.mu):  # adhesive edge: s^(-1/2) Re[K s^(i kappa/2)]
-            omega = math.atanh(self.gamma) / math.pi  # kappa/2
-            g1, g2 = values * np.sqrt(np.array([s_e, 4.0 * s_e]))
-            ell = math.log(4.0)
-            sinc = ell * np.sinc(omega * ell / np.pi)
-            return _EdgeModel("log-periodic", omega, float(g1), float((g2 - g1 * math.cos(omega * ell)) / sinc), s_e)
-        beta = math.atan(self.mu * self.gamma) / math.pi - 0.5  # (1 - x)^(alpha - 1/2)
-        return _EdgeModel("power", beta, float(values[0] / s_e**beta), 0.0, s_e)
+        self.edge_p = _EdgeModel.fit(np.asarray(flat.pressure(probe), dtype=float), self.s_e, self.mu, self.gamma)
+        self.edge_q = _EdgeModel.fit(np.asarray(flat.shear(probe), dtype=float), self.s_e, self.mu, self.gamma)
 
     def rule_knots(self, *, grade_zero: bool = False, extra: tuple[float, ...] = (),
                    n: float = 1.0) -> np.ndarray:

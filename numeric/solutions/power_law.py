@@ -73,6 +73,7 @@ from numeric.core.mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
                                      split_geometric)
 from numeric.solutions.flat_punch import flat_punch
+from numeric.solutions.solution import FlatPunchSolution
 from numeric.solutions.solver import LEVEL_TYPICAL_ERROR
 
 __all__ = [
@@ -429,13 +430,12 @@ def indentation_constant(flat: FlatStresses, n: float) -> float:
     Parameters
     ----------
     flat : FlatStresses
-        Flat-punch solution.
+        Flat-punch solution; its shear q0 enters (*).
     n : float
         Exponent of the indenter shape, n > 0.
     """
     n = check_n(n)
-    prepared = _Flat(flat)
-    return float(special.beta(0.5 * n, 0.5) / (2.0 * _a_star(prepared, n)))  # (3.5)
+    return float(special.beta(0.5 * n, 0.5) / (2.0 * _a_star(_Flat(flat), n)))  # (3.5)
 
 
 def indentation_constant_316(flat: FlatStresses, n: float) -> float:
@@ -449,7 +449,7 @@ def indentation_constant_316(flat: FlatStresses, n: float) -> float:
     Parameters
     ----------
     flat : FlatStresses
-        Flat-punch solution.
+        Flat-punch solution; its pressure p0 enters through (3.13).
     n : float
         Exponent of the indenter shape, n > 0.
     """
@@ -544,14 +544,12 @@ class PowerLawSolution:
     ----------
     n : float
         Exponent of the profile (2: sphere, 1: cone).
-    nu, gamma, mu, c : float
-        As for the flat punch; c is the same as the flat punch's (§3.2).
     compliance : float
         P* = n P0* / (n + 1) (3.17).
-    error : float
-        The flat punch's error estimate (c, mu, P0*).
     flat : FlatPunchSolution
         The flat-punch solution the stresses are computed from (3.13).
+    nu, gamma, mu, c, error : float
+        The flat punch's (c is the same for every power law, §3.2; ``error`` estimates c, mu, P0*).
     A : float
         Indentation constant, delta = A a^n / b^(n-1) (3.2), by the identity (*) above;
         computed on first access (a quadrature of the flat shear), then kept.
@@ -561,14 +559,29 @@ class PowerLawSolution:
     """
 
     n: float
-    nu: float | None
-    gamma: float
-    mu: float
-    c: float
     compliance: float
-    error: float
-    flat: FlatStresses
+    flat: FlatPunchSolution
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def nu(self) -> float | None:
+        return self.flat.nu
+
+    @property
+    def gamma(self) -> float:
+        return self.flat.gamma
+
+    @property
+    def mu(self) -> float:
+        return self.flat.mu
+
+    @property
+    def c(self) -> float:
+        return self.flat.c
+
+    @property
+    def error(self) -> float:
+        return self.flat.error
 
     @property
     def A(self) -> float:
@@ -592,16 +605,8 @@ class PowerLawSolution:
         return power_law_shear(self.flat, self.n, x)
 
 
-def power_law(
-    n: float,
-    nu: float | None = None,
-    mu: float | None = None,
-    c: float | None = None,
-    *,
-    gamma: float | None = None,
-    level: int | None = None,
-    rtol: float | None = None,
-) -> PowerLawSolution:
+def power_law(n: float, nu: float | None = None, mu: float | None = None, c: float | None = None, *,
+              gamma: float | None = None, level: int | None = None, rtol: float | None = None) -> PowerLawSolution:
     """Solve the frictional contact of a power-law indenter z ~ r^n, [S75] §3.
 
     Parameters are those of ``numeric.flat_punch`` plus the exponent ``n > 0``. With ``rtol``
@@ -623,13 +628,4 @@ def power_law(
         # accuracy meets it; below the solver's reach (c < 1e-5) flat_punch itself returns the law again.
         chosen = min((lv for lv, e in LEVEL_TYPICAL_ERROR.items() if e <= rtol), default=len(LEVELS) - 1)
         flat = flat_punch(nu=nu, mu=mu, c=c, gamma=gamma, level=chosen)
-    return PowerLawSolution(
-        n=n_value,
-        nu=flat.nu,
-        gamma=flat.gamma,
-        mu=flat.mu,
-        c=flat.c,
-        compliance=power_law_compliance(flat, n_value),
-        error=flat.error,
-        flat=flat,
-    )
+    return PowerLawSolution(n=n_value, compliance=power_law_compliance(flat, n_value), flat=flat)

@@ -42,14 +42,19 @@ def _matrix(rows, value: str, title: str, orders: tuple[OrderRow, ...] | None = 
     return lines + [""]
 
 
+def _error_and_order(rows, error: str, quantity: str, title: str, scaled_title: str) -> list[str]:
+    """The table of an error, then the table of the error scaled by its expected power of gamma with
+    the observed orders."""
+    return _matrix(rows, error, title) + _matrix(rows, "scaled", scaled_title, observed_orders(rows, error, quantity))
+
+
 def render_markdown(study: ExpansionStudy) -> str:
     """Deterministic Markdown tables of an ``ExpansionStudy`` (errors to 2 significant digits)."""
     mode = "fast mode (table μ and P*, level-2 stresses)" if study.fast else "full mode (level-3 solutions)"
     out = [f"### Checks of the expansions of §2.3 against the full solution ({mode})", ""]
     law = study.friction_law
-    out += _matrix(law, "relative_error", "(2.28): relative error (γ f0(c) − μ)/μ of the first-order law")
-    out += _matrix(law, "scaled", "(2.28): relative error / γ², with the observed order in γ",
-                   observed_orders(law, "relative_error", "(2.28)"))
+    out += _error_and_order(law, "relative_error", "(2.28)", "(2.28): relative error (γ f0(c) − μ)/μ of the first-order law",
+                            "(2.28): relative error / γ², with the observed order in γ")
     if law[0].scaled_second is not None:
         out += _matrix(law, "scaled_second", "second order μ/γ = f0 + γ² f2: relative error / γ⁴, with the observed order",
                        observed_orders(law, "relative_error_second", "second order"))
@@ -77,14 +82,12 @@ def render_markdown(study: ExpansionStudy) -> str:
                 for r in study.largest_stick_estimates] + [""]
     else:
         out += ["(The largest stick radius c_max(γ) is studied in full mode only.)", ""]
-    shear = study.stick_shear
-    out += _matrix(shear, "max_difference", "(2.31): max over the stick zone of |q/(μp) − (1 − ψ)|")
-    out += _matrix(shear, "scaled", "(2.31): that maximum / γ², with the observed order",
-                   observed_orders(shear, "max_difference", "(2.31)"))
+    out += _error_and_order(study.stick_shear, "max_difference", "(2.31)",
+                            "(2.31): max over the stick zone of |q/(μp) − (1 − ψ)|",
+                            "(2.31): that maximum / γ², with the observed order")
     comp = study.compliance
-    out += _matrix(comp, "error", "(2.34): error P*₁ − P* of the first-order compliance")
-    out += _matrix(comp, "scaled", "(2.34): error / γ⁴, with the observed order",
-                   observed_orders(comp, "error", "(2.34)"))
+    out += _error_and_order(comp, "error", "(2.34)", "(2.34): error P*₁ − P* of the first-order compliance",
+                            "(2.34): error / γ⁴, with the observed order")
     if comp[0].scaled_second is not None:
         out += _matrix(comp, "scaled_second", "P* = 1 + γ² P2 + γ⁴ P4: error / γ⁶, with the observed order",
                        observed_orders(comp, "error_second", "second order"))

@@ -122,6 +122,22 @@ def _nu_legend(ax: Axes, curves: Sequence[Curve], loc: str, extra: Sequence[tupl
     ax.legend(handles=handles, loc=loc)
 
 
+def _against_mu(ax: Axes, curves: Sequence[Curve]) -> None:
+    """A family of curves against mu, coloured by nu: the paper's values as open circles, the full
+    solution solid, the first-order law dashed, a limit dotted with its nu written at the right."""
+    for cv in curves:
+        colour = _nu_colour(cv.param("nu"))
+        if cv.model == "paper":
+            ax.plot(cv.x, cv.y, "o", mfc="none", color=colour, ms=5)
+        elif cv.model == "solver":
+            ax.plot(cv.x, cv.y, color=colour, lw=1.4)
+        elif cv.model in _LS:
+            ax.plot(cv.x, cv.y, color=colour, ls=_LS[cv.model], lw=1.0)
+        else:
+            ax.plot(cv.x, cv.y, color=colour, ls=":", lw=1.0)
+            _label_right(ax, cv.y[-1], rf"$\nu = {cv.param('nu'):g}$", colour)
+
+
 @_styled
 def plot_fig2_chi0(data: FigureData) -> Figure:
     """chi^(0)(x) (2.27) with its roots marked (paper's figure 2)."""
@@ -145,12 +161,7 @@ def plot_fig3_stick_radius(data: FigureData) -> Figure:
     """c against mu: full solution, (2.28), paper's values (paper's figure 3)."""
     fig = _new_figure(4.6, 3.4)
     ax = fig.add_subplot()
-    for cv in data.select("c(mu)"):
-        colour = _nu_colour(cv.param("nu"))
-        if cv.model == "paper":
-            ax.plot(cv.x, cv.y, "o", mfc="none", color=colour, ms=5)
-        else:
-            ax.plot(cv.x, cv.y, color=colour, ls=_LS[cv.model], lw=1.4 if cv.model == "solver" else 1.0)
+    _against_mu(ax, data.select("c(mu)"))
     ax.set_xlim(0.0, 1.5)
     ax.set_ylim(0.0, 1.0)
     ax.set_xlabel(r"friction coefficient $\mu$")
@@ -166,13 +177,7 @@ def plot_fig4_compliance(data: FigureData) -> Figure:
     """P* against mu with the adhesive limits (paper's figure 4)."""
     fig = _new_figure(4.6, 3.4)
     ax = fig.add_subplot()
-    for cv in data.select("P*(mu)"):
-        colour = _nu_colour(cv.param("nu"))
-        if cv.model == "solver":
-            ax.plot(cv.x, cv.y, color=colour, lw=1.4)
-        else:
-            ax.plot(cv.x, cv.y, color=colour, ls=":", lw=1.0)
-            _label_right(ax, cv.y[-1], rf"$\nu = {cv.param('nu'):g}$", colour)
+    _against_mu(ax, data.select("P*(mu)"))
     ax.set_xlim(0.0, 2.0)
     ax.set_ylim(0.995, 1.105)
     ax.set_xlabel(r"friction coefficient $\mu$")
@@ -302,15 +307,7 @@ def plot_sphere_indentation(data: FigureData) -> Figure:
     """1/A against mu for the sphere."""
     fig = _new_figure(4.6, 3.4)
     ax = fig.add_subplot()
-    for cv in data.select("1/A(mu)"):
-        colour = _nu_colour(cv.param("nu"))
-        if cv.model == "paper":
-            ax.plot(cv.x, cv.y, "o", mfc="none", color=colour, ms=5)
-        elif cv.model == "solver":
-            ax.plot(cv.x, cv.y, color=colour, lw=1.4)
-        else:
-            ax.plot(cv.x, cv.y, color=colour, ls=":", lw=1.0)
-            _label_right(ax, cv.y[-1], rf"$\nu = {cv.param('nu'):g}$", colour)
+    _against_mu(ax, data.select("1/A(mu)"))
     ax.set_xlim(0.0, 2.0)
     ax.set_xlabel(r"friction coefficient $\mu$")
     ax.set_ylabel(r"sphere: $1/A = a^2/(R\delta)$")

@@ -84,7 +84,7 @@ def test_sneddon_cone_frictionless():
     Es = e_star(GLASS)
     a = 2.0 * delta * math.tan(theta) / math.pi  # Sneddon: delta = (pi/2) a cot(theta)
     # A = pi/2 comes from the power-law quadrature, accurate to ~1e-14 on closed-form flat
-    # solutions (numeric.power_law); 1e-11 leaves a margin
+    # solutions (numeric.solutions.power_law); 1e-11 leaves a margin
     assert s.contact_radius == pytest.approx(a, rel=1e-11)
     assert s.load == pytest.approx(2.0 / math.pi * Es * delta**2 * math.tan(theta), rel=1e-11)
     r = np.array([0.1, 0.5, 0.9]) * a

@@ -1,4 +1,4 @@
-"""Tests of numeric.power_law ([S75] §3): closed forms, (4.18), mpmath oracles.
+"""Tests of numeric.solutions.power_law ([S75] §3): closed forms, (4.18), mpmath oracles.
 
 Reference flat solutions are built from the closed forms: the Boussinesq pressure (2.26)
 and the adhesive solution of Appendix B (asymptotics.adhesive, accurate to ~1e-14

@@ -1,6 +1,6 @@
 """Build the Chebyshev table of the eigenvalue relation mu(c, gamma) and of P*(c, gamma).
 
-Computes the level-3 solution (``numeric.core.eigen.solve_mu``, ~1e-12) on a tensor grid of
+Computes the level-3 solution (``numeric.core.graded_eigen.solve_mu``, ~1e-12) on a tensor grid of
 Chebyshev points of the first kind in xi = logit(c) (c in [C_MIN, C_MAX]) and
 eta = gamma^2 (gamma in [0, GAMMA_MAX]), turns the values of
 log(mu / (gamma f0(c))) (f0 the small-gamma law (2.28); this ratio tends to 1 as
@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 
 from asymptotics.first_order import mu_over_gamma
-from numeric.core.mesh import LEVELS
-from numeric.core.eigen import solve_mu
+from numeric.core.graded_mesh import LEVELS
+from numeric.core.graded_eigen import solve_mu
 from numeric.core.table import interpolate
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -11,7 +11,7 @@ expansion checks, figures) -> ``solutions`` (the problems and their routes) and
 (quadrature, mesh, collocation, eigenvalue, table) -> ``asymptotics`` -> numpy, scipy, mpmath.
 """
 
-from numeric.core.eigen import NoEigenvalueError, SolverError
+from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import PowerLawSolution, power_law
 from numeric.solutions.solution import AccuracyWarning, FlatPunchSolution

@@ -132,7 +132,7 @@ def test_clear_caches_empties_the_solver_caches():
     assert scheme.collocation_matrix.cache_info().currsize > 0
     names = clear_caches()
     assert "numeric.baseline.scheme.collocation_matrix" in names
-    assert "numeric.core.mesh._reference" in names
+    assert "numeric.core.graded_mesh._reference" in names
     assert scheme.collocation_matrix.cache_info().currsize == 0
 
 

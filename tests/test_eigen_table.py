@@ -9,8 +9,8 @@ import pytest
 
 import numeric.core.table_data as data
 from numeric import flat_punch, friction_coefficient, stick_radius
-from numeric.core.mesh import LEVELS
-from numeric.core.eigen import solve_mu
+from numeric.core.graded_mesh import LEVELS
+from numeric.core.graded_eigen import solve_mu
 from numeric.core.table import table_compliance, table_friction_coefficient, table_stick_radius
 
 ROOT = Path(__file__).resolve().parents[1]

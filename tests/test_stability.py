@@ -113,7 +113,7 @@ def _constraints_and_continuity(nu: float, c: float) -> None:
     # steadily with the level (measured: nu = 0, c = 0.0039: 5.8e-7 at level 1, 2.0e-6 at level 3;
     # nu = 0.47, c = 0.25: 9.2e-9, 1.1e-8), so no level-to-level rate is asserted. Tolerance:
     # 1e-3 p(c), the accuracy the solver itself accepts for mu p - q at the node next to c
-    # (numeric.core.eigen._admissible); measured worst 5e-5 p(c) at nu = -0.5, c = 0.85 (alpha = 0.23)
+    # (numeric.core.graded_eigen._admissible); measured worst 5e-5 p(c) at nu = -0.5, c = 0.85 (alpha = 0.23)
     below = np.nextafter(c, 0.0)
     for f in (fine.pressure, fine.shear):
         jump = abs(float(f(below)) - float(f(c)))

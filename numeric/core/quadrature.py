@@ -1,6 +1,6 @@
 """Gauss-Legendre quadrature: the one home of the rules used by the solver and the power-law transforms.
 
-Element rules of the hp discretisation (``numeric.core.mesh``): ``gauss_rule(k)`` gives the
+Element rules of the hp discretisation (``numeric.core.graded_mesh``): ``gauss_rule(k)`` gives the
 k + 1 nodes and weights on [-1, 1] with the inverse Legendre-Vandermonde matrix that turns
 nodal values into Legendre coefficients; ``padded_inverse_vandermonde`` stacks them for all
 degrees up to kmax; ``legendre_values`` evaluates P_0 ... P_k by the three-term recurrence.

@@ -33,8 +33,8 @@ from collections.abc import Callable
 
 from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
 
-from numeric.core.eigen import SolverError
-from numeric.core.mesh import LEVELS
+from numeric.core.errors import SolverError
+from numeric.core.graded_mesh import LEVELS
 from numeric.solutions.law import LawRoute
 from numeric.solutions.limits import closed_form_given_c, closed_form_given_mu
 from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LEVEL_C_MIN, SolverRoute
@@ -91,7 +91,7 @@ def flat_punch(
     gamma : float, optional
         Coupling constant (2.2) instead of ``nu``.
     level : int, optional
-        Resolution level 1..4 of ``numeric.core.mesh.LEVELS`` (the next coarser one gives
+        Resolution level 1..4 of ``numeric.core.graded_mesh.LEVELS`` (the next coarser one gives
         the error estimate); 2 (the default) reaches ~1e-10. Not together with ``rtol``.
     rtol : float, optional
         Relative accuracy wanted in the returned c (given mu) or mu (given c): the cheapest

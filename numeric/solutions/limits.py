@@ -29,7 +29,7 @@ from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_a
 from asymptotics.first_order import frictionless_pressure
 from asymptotics.materials import kappa_from_gamma
 
-from numeric.core.eigen import NoEigenvalueError
+from numeric.core.errors import NoEigenvalueError
 from numeric.solutions.solution import FlatPunchSolution
 
 __all__ = [

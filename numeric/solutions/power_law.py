@@ -69,7 +69,7 @@ from scipy import special
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_n, check_x
 
-from numeric.core.mesh import LEVELS
+from numeric.core.graded_mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
                                      split_geometric)
 from numeric.solutions.flat_punch import flat_punch

@@ -3,7 +3,7 @@
 ``FlatPunchSolution`` carries the numbers (mu, c, P*, their error, the route taken) and a
 stress field: the closed forms of the limits (``numeric.solutions.limits``), the first-order
 fields of the asymptotic law (``numeric.solutions.law``) or the discrete solution of the solver
-(``numeric.core.collocation.FlatField``). Every route builds it; the route choice
+(``numeric.core.graded_collocation.FlatField``). Every route builds it; the route choice
 (``numeric.solutions.flat_punch``) compares them by ``error`` with ``meets``.
 
 References

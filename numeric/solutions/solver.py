@@ -25,9 +25,10 @@ from dataclasses import replace
 
 from asymptotics.adhesive import compliance_adhesive
 
-from numeric.core.collocation import FlatField
-from numeric.core.eigen import AboveTopError, NoEigenvalueError, SolverError, solve_c, solve_mu
-from numeric.core.mesh import LEVELS
+from numeric.core.graded_collocation import FlatField
+from numeric.core.errors import NoEigenvalueError, SolverError
+from numeric.core.graded_eigen import AboveTopError, solve_c, solve_mu
+from numeric.core.graded_mesh import LEVELS
 from numeric.core.table import table_available, table_friction_coefficient
 from numeric.solutions.limits import (ADHESIVE_EDGE_BREAKPOINTS, C_MAX_COEFFICIENT, C_MAX_UPPER_COEFFICIENT, C_TOP,
                                       ClosedForm, c_search_top, gap_scale, no_eigenvalue)
@@ -38,14 +39,14 @@ __all__ = ["DEFAULT_LEVEL", "LEVEL_C_MIN", "C_ASYMPTOTIC", "LEVEL_TYPICAL_ERROR"
 
 DEFAULT_LEVEL = 2
 #: Smallest stick radius at which each level's eigenvalue iteration converges. Measured with
-#: ``numeric.core.eigen.solve_mu`` at gamma = 0.1, 0.3, 0.5, 0.75: level 1 converged at 2e-6 and 5e-6;
+#: ``numeric.core.graded_eigen.solve_mu`` at gamma = 0.1, 0.3, 0.5, 0.75: level 1 converged at 2e-6 and 5e-6;
 #: level 2 failed at 2e-5 (gamma = 0.3) and 3e-5 (0.1, 0.3), converged at 5e-5; level 3 failed at
 #: 2e-4, 3e-4, converged at 5e-4; level 4 failed at 1e-3 ... 5e-3, converged at 1e-2. A failing
 #: iteration spends 5-25 s before SolverError, so a level is not tried below its floor.
 LEVEL_C_MIN = {1: 5e-6, 2: 5e-5, 3: 5e-4, 4: 1e-2}
 #: Below this stick radius the asymptotic law replaces the solver (twice level 1's floor).
 C_ASYMPTOTIC = 1e-5
-#: Typical relative accuracy of each level (numeric.core.mesh.LEVELS); rtol picks the first that meets it.
+#: Typical relative accuracy of each level (numeric.core.graded_mesh.LEVELS); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {1: 1e-8, 2: 1e-10, 3: 1e-12}
 #: Rough run time in seconds of a solve at each level with its error estimate (derivations/benchmark.md),
 #: for ordering the routes.
@@ -93,7 +94,7 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int) -> FlatP
 
 
 def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_guess: float) -> FlatPunchSolution:
-    """The stick radius for friction mu at ``level`` (``numeric.core.eigen.solve_c``), or the bracket
+    """The stick radius for friction mu at ``level`` (``numeric.core.graded_eigen.solve_c``), or the bracket
     near full stick where mu exceeds what the search reaches."""
     try:
         fine, error = solve_c(mu, gamma, LEVELS[level], LEVELS[level - 1], c_guess=c_guess,

@@ -9,7 +9,7 @@ adhesive case c = 1 for each nu, every method at every resolution it offers:
   mesh (ii)) and on the graded meshes (iii), (iv); the sphere's A by ``sphere_from_flat``
   ((4.13)-(4.17));
 * our solver ``numeric.flat_punch`` at levels 1-4 (mu, P*, p(0) for given c; c for given
-  mu), at c = 1 the discrete adhesive solver ``numeric.core.collocation.solve_adhesive`` (``flat_punch``
+  mu), at c = 1 the discrete adhesive solver ``numeric.core.graded_collocation.solve_adhesive`` (``flat_punch``
   itself returns the closed form there, also listed); A by ``indentation_constant`` on the
   flat solution (what ``power_law(2, ...).A`` computes);
 * the Chebyshev table route (``friction_coefficient``, ``stick_radius``,
@@ -64,8 +64,8 @@ from asymptotics.adhesive import central_pressure_adhesive, compliance_adhesive,
 from asymptotics.materials import gamma_from_nu
 
 from numeric.baseline import scheme
-from numeric.core import collocation
-from numeric.core.mesh import LEVELS
+from numeric.core import graded_collocation
+from numeric.core.graded_mesh import LEVELS
 from numeric.core.table import table_compliance
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import indentation_constant, power_law
@@ -396,7 +396,7 @@ def _measure_solver(case: Case, ref: Reference, config: Config, solved: dict | N
     solved = solved or {}
     for level in config.levels:
         if case.adhesive:
-            field_, t = _timed(lambda level=level: collocation.solve_adhesive(case.gamma, LEVELS[level]), config)
+            field_, t = _timed(lambda level=level: graded_collocation.solve_adhesive(case.gamma, LEVELS[level]), config)
             size = field_.n_unknowns
             values = {"P*": (field_.compliance, t), "p(0)": (float(field_.pressure(np.array([0.0]))[0]), t)}
             flat = field_
@@ -485,7 +485,7 @@ def _measure_setup(config: Config) -> list[Setup]:
             calls += [(adhesive, SCHEME, f"N = {n}", lambda n=n: scheme.solve_adhesive(scheme.uniform_mesh(n), nu))
                       for n in config.scheme_n]
         if "solver" in config.methods:
-            calls += [(adhesive, SOLVER, f"level {lv}", lambda lv=lv: collocation.solve_adhesive(g, LEVELS[lv]))
+            calls += [(adhesive, SOLVER, f"level {lv}", lambda lv=lv: graded_collocation.solve_adhesive(g, LEVELS[lv]))
                       for lv in config.levels]
     out = []
     for case, method, resolution, call in calls:

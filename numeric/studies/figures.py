@@ -41,7 +41,7 @@ from asymptotics.arrays import read_only
 from asymptotics.first_order import chi0, mu_over_gamma, shear_ratio_first_order
 from asymptotics.materials import check_c, check_nu, gamma_from_nu
 
-from numeric.core.eigen import NoEigenvalueError
+from numeric.core.errors import NoEigenvalueError
 from numeric.core.table import table_compliance
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import indentation_constant, power_law, power_law_pressure, power_law_shear

@@ -10,7 +10,7 @@ Three studies of the high-accuracy solver ([S75] §2, ``numeric.flat_punch``):
    sample with the finest level (``LEVELS[4]``): |value - reference| <= error must hold.
 2. ``plateau_study``, ``adhesive_plateau``: the error of mu and P* (2.4) as the resolution
    grows past convergence, with the condition number of the collocation matrix
-   D(mu) = D0 + mu D1 of ``numeric.core.eigen`` (raw and after the row/column equilibration the
+   D(mu) = D0 + mu D1 of ``numeric.core.graded_eigen`` (raw and after the row/column equilibration the
    solver factors); at c = 1 the reference is the exact P0* = atanh(gamma)/gamma (B4).
 3. ``mpmath_crosscheck``: the level-0 system D(mu) z = b solved in mpmath at 30 digits
    (same double matrix, so the difference is the round-off of the double solve) and one
@@ -45,9 +45,10 @@ from asymptotics.adhesive import central_pressure_adhesive, pressure_adhesive_mp
 from asymptotics.materials import gamma_from_nu
 
 from numeric.core import table_data
-from numeric.core.collocation import EquilibratedLU, adhesive_system, end_value_row, equilibrate, solve_adhesive, system
-from numeric.core.eigen import NoEigenvalueError, SolverError, solve_mu
-from numeric.core.mesh import LEVELS, Resolution, discretise
+from numeric.core.graded_collocation import EquilibratedLU, adhesive_system, end_value_row, equilibrate, solve_adhesive, system
+from numeric.core.errors import NoEigenvalueError, SolverError
+from numeric.core.graded_eigen import solve_mu
+from numeric.core.graded_mesh import LEVELS, Resolution, discretise
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import power_law
 from numeric.solutions.sweep import friction_coefficient, stick_radius
@@ -316,7 +317,7 @@ def _in_table(p: SweepPoint) -> bool:
 
 # ----------------------------------------------------------------------------- plateau
 def _conditions(D: np.ndarray, exact: bool) -> tuple[float, float]:
-    """Condition of D and of its equilibrated form (``numeric.core.collocation.equilibrate``, what the
+    """Condition of D and of its equilibrated form (``numeric.core.graded_collocation.equilibrate``, what the
     solver factors): 2-norm by SVD when ``exact``, else the 1-norm estimate of Hager-Higham."""
     scaled = equilibrate(D)[0]
     out = []
@@ -398,7 +399,7 @@ def adhesive_plateau(gamma: float, *, finest_level: int = 4, extra: bool = True,
 def mpmath_crosscheck(c: float, nu: float, *, level: int = 0, dps: int = 30) -> tuple[MpCheck, ...]:
     """The level-``level`` system D(mu) z = b at the double-precision root, solved in mpmath.
 
-    D, b are the double matrices of ``numeric.core.collocation.system``; mpmath solves them at ``dps``
+    D, b are the double matrices of ``numeric.core.graded_collocation.system``; mpmath solves them at ``dps``
     digits, so the differences are the round-off of the double LU solve (the solver's own
     equilibrated LU) and of the eigenvalue iteration. One Newton step of
     F(mu) = mu p(c-) - c Q(c-) (2.11) in mpmath, with dz/dmu = -D^-1 D1 z, gives the root of

@@ -6,7 +6,7 @@ is D(mu) z = b with D(mu) = D0 + mu D1 and z = (P_stick, Q_stick, P_slip) (``sys
 c = 1 there is no slip zone and the system is linear (``adhesive_system``, ``solve_adhesive``).
 Matrices are factored after row and column equilibration (``equilibrate``, ``EquilibratedLU``).
 ``FlatField`` is the discrete solution as piecewise Legendre series in u = t^2, with p, q and
-the slip u of (2.10); ``numeric.core.eigen`` finds the mu at which it is the physical one.
+the slip u of (2.10); ``numeric.core.graded_eigen`` finds the mu at which it is the physical one.
 
 References
 ----------
@@ -24,7 +24,7 @@ import scipy.linalg as sla
 
 from asymptotics.arrays import read_only
 
-from numeric.core.mesh import Discretisation, Elements, Resolution, abel_matrices, adhesive_discretisation
+from numeric.core.graded_mesh import Discretisation, Elements, Resolution, abel_matrices, adhesive_discretisation
 from numeric.core.quadrature import gauss_rule, legendre_values
 
 __all__ = ["FlatField", "system", "adhesive_system", "equilibrate", "EquilibratedLU", "end_value_row", "flat_field",

@@ -1,6 +1,6 @@
 """The eigenvalue problem of [S75] §2.2 on the hp discretisation: mu for given c, and c for given mu.
 
-The collocated system D(mu) z = b, D(mu) = D0 + mu D1, is ``numeric.core.collocation.system``.
+The collocated system D(mu) z = b, D(mu) = D0 + mu D1, is ``numeric.core.graded_collocation.system``.
 Eigenvalue condition: F(mu) = mu p(c-) - q(c-), the excess friction phi = p - q/mu of
 (2.11) at the stick side of x = c, must vanish (equivalent to chi(c) = 0 (2.13) and to
 q/(mu p) -> 1 (§4.1); reformulation.md). For mu != mu_c the discrete solution tries to
@@ -36,22 +36,15 @@ from scipy.special import expit, logit
 
 from asymptotics.first_order import mu_over_gamma
 
-from numeric.core.collocation import EquilibratedLU, FlatField, end_value_row, flat_field, system
-from numeric.core.mesh import Discretisation, Resolution, discretise
+from numeric.core.errors import NoEigenvalueError, SolverError
+from numeric.core.graded_collocation import EquilibratedLU, FlatField, end_value_row, flat_field, system
+from numeric.core.graded_mesh import Discretisation, Resolution, discretise
 from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
 
-__all__ = ["solve_mu", "solve_c", "NoEigenvalueError", "SolverError", "AboveTopError"]
+__all__ = ["solve_mu", "solve_c", "AboveTopError"]
 
 #: A model root is certified when its residual is below this (relative to the right-hand side).
 CERTIFIED = 1e-13
-
-
-class NoEigenvalueError(RuntimeError):
-    """No friction coefficient mu >= 0 gives the stick radius asked for."""
-
-
-class SolverError(RuntimeError):
-    """The solver did not converge at this resolution (e.g. c below ~1e-4 at fine levels)."""
 
 
 def _arnoldi_step(factor: EquilibratedLU, D1_slip: np.ndarray, V: np.ndarray, H: np.ndarray, m: int,

@@ -89,48 +89,6 @@ def test_incompressible_limit_has_no_coupling():
     assert flat_punch(nu=0.5, c=0.5).mu == 0.0
 
 
-ADHESIVE_GAMMAS = [0.5, 1 / 3, 0.74]  # nu = 0, 1/4, -0.92
-
-
-@pytest.mark.parametrize("level", [3, 4])
-@pytest.mark.parametrize("gamma", ADHESIVE_GAMMAS)
-def test_adhesive_solver_against_closed_forms(gamma, level):
-    # The solver's own c = 1 mesh (not the closed form): P* (B4) and p(0) (4.10) from
-    # mpmath. 1e-11 is the accuracy levels 3-4 are meant to reach; measured worst 7.3e-12
-    # (p(0), gamma = .74, level 3), otherwise <= 1.8e-12.
-    field = solve_adhesive(gamma, LEVELS[level])
-    compliance, p0, _ = _adhesive_exact(gamma)
-    assert abs(field.compliance - compliance) < 1e-11
-    assert abs(field.pressure(np.array([0.0]))[0] - p0) < 1e-11
-    # the whole profile against (B3) by mpmath quadrature, same 1e-11 relative budget
-    # (measured worst 1.4e-12, q at x = .3, gamma = .5, level 3).
-    x = np.array([0.3, 0.7, 0.95, 0.999])
-    np.testing.assert_allclose(field.pressure(x), [float(pressure_adhesive_mp(v, gamma)) for v in x], rtol=1e-11)
-    np.testing.assert_allclose(field.shear(x), [float(shear_adhesive_mp(v, gamma)) for v in x], rtol=1e-11)
-
-
-@pytest.mark.parametrize(
-    "gamma, level",
-    [
-        (0.5, 3),
-        (0.5, 4),
-        (1 / 3, 3),
-        (1 / 3, 4),
-        (0.74, 3),
-        (0.74, 4),
-    ],
-)
-def test_adhesive_solver_shear_slope(gamma, level):
-    # q'(0) = kappa p0(0)/2 (4.10) from mpmath, read as q(x)/x at x = 1e-7 (q = x Q(x^2),
-    # so the O(x^2) correction is 1e-14 relative). Target 1e-11 absolute. The first
-    # adhesive meshes missed it (1.8e-11 at gamma = 1/3, 1.4e-10 at .74, level 3); with
-    # degree 32 (level 3) and 36 (level 4) P*, p(0), q'(0) measure <= 3.1e-12 for gamma
-    # in {.1, 1/3, .5, 2/3, .74}.
-    field = solve_adhesive(gamma, LEVELS[level])
-    q_slope = _adhesive_exact(gamma)[2]
-    assert abs(field.shear(np.array([1e-7]))[0] / 1e-7 - q_slope) < 1e-11
-
-
 # ---------------------------------------------------------------------------------------
 # 2. Two methods agree: the paper's scheme, extrapolated in h, against the solver
 # ---------------------------------------------------------------------------------------
@@ -174,42 +132,6 @@ def test_paper_scheme_extrapolates_to_the_solver(c, nu):
 # ---------------------------------------------------------------------------------------
 # 3. Self-convergence and the error estimate
 # ---------------------------------------------------------------------------------------
-
-ROUNDING = 1e-13  # ~100 eps of quantities of order 1-10: differences below this are noise
-
-SELF_CONVERGENCE_POINTS = [
-    (0.05, 0.49),
-    (0.05, -0.5),
-    (0.5, 0.0),
-    (0.98, 0.49),
-    # (.98, -.5): mu = 13.57, mu gamma = 9. The levels first seemed to stall here (|L_k - L4|
-    # = 2e-4 ... 2.5e-6); the cause was the Krylov root finder accepting a model root far
-    # from its LU centre, now refined by a second LU; levels 3, 4 agree to 8e-11 since.
-    (0.98, -0.5),
-]
-
-
-@pytest.mark.parametrize("c, nu", SELF_CONVERGENCE_POINTS)
-def test_levels_converge_and_error_bounds_the_true_error(c, nu):
-    g = _gamma(nu)
-    fields = [solve_mu(c, g, LEVELS[k]) for k in range(5)]
-    mus = np.array([f.mu for f in fields])
-    ps = np.array([f.compliance for f in fields])
-    dist = np.maximum(np.abs(mus - mus[4]), np.abs(ps - ps[4]))  # distance of level k from level 4
-    # Exponential convergence: each level at least 10x closer to level 4 than the one
-    # before, until rounding (measured: factors 25-1000 over these points).
-    for k in range(2):
-        assert dist[k + 1] <= max(dist[k] / 10, ROUNDING), dist
-    # The public error of level 2 (|L2 - L1|) must bound its true error. Level 4 is a
-    # valid reference only if it is far more accurate than the bound: |L3 - L4| < 1% of
-    # the estimate (measured <= 1e-2 of it), so |L2 - L4| is the true error to 1%.
-    s = flat_punch(nu=nu, c=c, level=2)
-    # the same level-2 problem; the API starts its root finder from the table's mu, so the
-    # roots agree to the finder's 1e-14 relative tolerance rather than bit for bit
-    assert s.mu == pytest.approx(mus[2], rel=1e-13) and s.compliance == pytest.approx(ps[2], rel=1e-13)
-    assert dist[3] <= max(0.01 * s.error, ROUNDING), (dist[3], s.error)
-    assert dist[2] + dist[3] <= s.error, (dist[2], s.error)
-
 
 # ---------------------------------------------------------------------------------------
 # 4. Small gamma: (2.28) with an O(gamma^2) correction
@@ -395,7 +317,7 @@ def test_broadcasting():
         (lambda: flat_punch(nu=0.25, mu=0.3, c=0.5), "exactly one of mu"),
         (lambda: flat_punch(nu=0.25), "exactly one of mu"),
         (lambda: flat_punch(nu=0.25, gamma=0.3, c=0.5), "exactly one of nu"),
-        (lambda: flat_punch(nu=0.25, c=0.5, level=0), "level"),
+        (lambda: flat_punch(nu=0.25, c=0.5, level=-1), "level"),
         (lambda: flat_punch(nu=0.25, c=0.5, level=9), "level"),
         (lambda: flat_punch(nu=0.25, c=0.5, level=1).pressure(1.5), r"\bx\b"),
         (lambda: flat_punch(nu=0.25, c=0.5, level=1).shear(-0.1), r"\bx\b"),
@@ -426,16 +348,3 @@ def test_dissimilar_bodies_through_gamma():
     assert flat_punch(gamma=g, mu=0.2).c == flat_punch(nu=0.25, mu=0.2).c
 
 
-@pytest.mark.parametrize("nu, c", [(0.25, 0.5), (0.0, 0.8), (-0.5, 0.3), (0.45, 0.1)])
-def test_pointwise_stresses_converge(nu, c):
-    # The target: stresses to 1e-8 pointwise away from x = c and x = 1. Against level 4:
-    # level 3 measured <= 9e-11 at all seven points (tolerance 1e-9); level 2 <= 2.1e-9 up to
-    # the middle of the slip annulus (tolerance 1e-8), but 3.4e-8 at x = c + 0.9 (1 - c), next
-    # to the edge singularity, so the default level meets the target only away from the edge.
-    g = _gamma(nu)
-    ref, fine, default = (solve_mu(c, g, LEVELS[k]) for k in (4, 3, 2))
-    x = np.array([0.0, 0.2 * c, 0.6 * c, 0.9 * c, c + 0.1 * (1 - c), c + 0.5 * (1 - c), c + 0.9 * (1 - c)])
-    for f in ("pressure", "shear"):
-        exact = getattr(ref, f)(x)
-        assert np.max(np.abs(getattr(fine, f)(x) - exact)) < 1e-9
-        assert np.max(np.abs(getattr(default, f)(x[:-1]) - exact[:-1])) < 1e-8

@@ -21,6 +21,7 @@ from asymptotics.second_order import F2_SMALL_C_FIT as R_SMALL_C
 from numeric import NoEigenvalueError, power_law
 from numeric.solutions.law import law_bracket as _law_bracket
 from numeric import AccuracyWarning, flat_punch, friction_coefficient, stick_radius
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from numeric.solutions.solver import C_ASYMPTOTIC
 from numeric.solutions.sweep import table_meets
 
@@ -67,10 +68,10 @@ GIVEN_C_ROUTES = [
     (0.49, 1e-9, "solver level"),
     (0.45, 1e-2, "asymptotic, first order"),
     (0.45, 1e-4, "asymptotic, second order"),
-    (0.45, 1e-6, "solver level 1"),
-    (0.25, 1e-2, "solver level 1"),
-    (0.25, 1e-8, "solver level 2"),  # level 1's error 7.6e-9 > 1e-8 mu = 1.8e-9: one level up
-    (0.25, 1e-10, "solver level 3"),
+    (0.45, 1e-6, "solver level 0"),
+    (0.25, 1e-2, "solver level 0"),
+    (0.25, 1e-8, "solver level 1"),  # level 0's error estimate (5e-9) > 1e-8 mu = 1.8e-9: one level up
+    (0.25, 1e-10, "solver level 2"),  # the first level whose typical accuracy (1e-11) meets 1e-10
 ]
 
 
@@ -89,9 +90,9 @@ GIVEN_MU_ROUTES = [
     (0.49, 0.01, 1e-2, "asymptotic, first order"),
     (0.49, 0.01, 1e-4, "asymptotic, second order"),
     (0.45, 0.05, 1e-2, "asymptotic, second order"),  # first order: c bound 1.5e-2 > rtol
-    (0.45, 0.05, 1e-4, "solver level 1"),
-    (0.25, 0.2, 1e-2, "solver level 1"),
-    (0.25, 0.2, 1e-10, "solver level 3"),
+    (0.45, 0.05, 1e-4, "solver level 0"),
+    (0.25, 0.2, 1e-2, "solver level 0"),
+    (0.25, 0.2, 1e-10, "solver level 2"),
 ]
 
 
@@ -114,7 +115,7 @@ def test_default_route_is_unchanged():
 def test_sweep_routes_meet_rtol():
     # friction_coefficient: table (1e-10 in mu) for rtol >= 1e-10; asymptotic where the law suffices
     ref = _ref_c(0.25, 0.5)
-    for rtol in (1e-2, 1e-6, 1e-10, 1e-12):
+    for rtol in (1e-2, 1e-6, 1e-10, 1e-11):
         mu = friction_coefficient(0.5, 0.25, rtol=rtol)
         assert abs(mu - ref.mu) <= rtol * ref.mu + ref.error, rtol
     ref = _ref_mu(0.25, 0.2)
@@ -135,10 +136,10 @@ def test_table_bound_for_c_divides_by_the_slope():
 
 # ----------------------------------------------------------------------------- unreachable rtol
 def test_unreachable_rtol_warns_and_returns_the_best():
-    # c = 1e-4: only levels 1-2 reach it (LEVEL_C_MIN); their error ~1e-10 mu misses 1e-13
+    # c = 1e-4: no level reaches 1e-15 relative (the error floor is 1e-14, ERROR_FLOOR): the finest is returned
     with pytest.warns(AccuracyWarning, match="not met"):
-        s = flat_punch(nu=0.25, c=1e-4, rtol=1e-13)
-    assert s.route.startswith("solver level 2") and "does not reach" in s.route
+        s = flat_punch(nu=0.25, c=1e-4, rtol=1e-15)
+    assert s.route.startswith("solver level 4")
     # below the solver's reach only the asymptotic law is left
     with pytest.warns(AccuracyWarning, match="not met"):
         s = flat_punch(nu=0.25, c=1e-7, rtol=1e-6)
@@ -158,7 +159,7 @@ def test_handover_given_c_is_continuous_within_the_stated_error(gamma):
     # measured |mu_solver - mu_law| / (the law's stated error) = 0.18, 0.46, 0.61
     solver = flat_punch(gamma=gamma, c=C_ASYMPTOTIC)
     law = flat_punch(gamma=gamma, c=C_ASYMPTOTIC * (1 - 1e-12))
-    assert solver.route.startswith("solver level 1") and law.route.startswith("asymptotic, second order")
+    assert solver.route.startswith("solver level 2") and law.route.startswith("asymptotic, second order")
     assert abs(solver.mu - law.mu) <= law.error + solver.error
     assert abs(solver.compliance - law.compliance) <= law.error + solver.error
 
@@ -176,7 +177,7 @@ def test_handover_given_mu_is_continuous_within_the_stated_range(gamma):
         mu = math.nextafter(mu, math.inf)
     solver = flat_punch(gamma=gamma, mu=mu)
     law = flat_punch(gamma=gamma, mu=mu * (1 - 1e-12))
-    assert solver.route.startswith("solver level 1") and law.route.startswith("asymptotic")
+    assert solver.route.startswith("solver level 2") and law.route.startswith("asymptotic")
     bracket = _law_bracket(mu * (1 - 1e-12), gamma, 2)
     assert bracket.lo - solver.error <= solver.c <= bracket.hi + solver.error
     assert abs(solver.compliance - law.compliance) <= law.error + solver.error
@@ -229,26 +230,24 @@ def _gap(gamma):
     return math.exp(-math.pi / float(kappa_from_gamma(gamma)))
 
 
-def test_bug3_5_large_mu_at_large_gamma_is_solved_or_bracketed_quickly():
-    # was: SolverError naming c = 0.99999999895 (bug 3); RuntimeWarning overflow (an error here) and
-    # 30-60 s (bug 5). mu = 10 at gamma = .749 now solves (c below c_max); mu = 1e4 is bracketed
+def test_bug3_5_large_mu_at_large_gamma_is_solved_quickly():
+    # was: SolverError naming c = 0.99999999895 (bug 3); RuntimeWarning overflow and 30-60 s (bug 5); then a
+    # bracket beyond mu(c_top). mu -> inf is the regular limit theta -> pi/2 of the eigenvalue relation, so
+    # every mu is solved: c rises toward c_max(gamma) (asymptotics.largest_stick_radius), never reaching it
     start = time.perf_counter()
-    s = flat_punch(gamma=0.749, mu=10.0)
-    assert s.route.startswith("solver level 2") and abs(s.mu / 10.0 - 1) < 1e-9
-    assert s.c < 1 - 7.5 * _gap(0.749)
-    for gamma, mu in ((0.749, 1e4), (2 / 3, 1000.0)):
-        b = flat_punch(gamma=gamma, mu=mu)
-        assert b.route.startswith("bracketed") and "c_max" in b.route
-        # c: the midpoint of (c_top, c_hi) = (1 - 8.4 e, 1 - 7.5 e), e = exp(-pi/kappa); error >= half-width
-        assert b.c == pytest.approx(1 - 7.95 * _gap(gamma), rel=1e-14) and b.error >= 0.45 * _gap(gamma)
-    assert time.perf_counter() - start < 15.0  # measured 4.5 s for the three
+    for gamma, mu in ((0.749, 10.0), (0.749, 1e4), (2 / 3, 1000.0)):
+        s = flat_punch(gamma=gamma, mu=mu)
+        assert s.route.startswith("solver level 2") and s.mu == mu
+        gap_max = float(largest_stick_radius_gap(gamma))
+        assert 0.0 < (1.0 - s.c) - gap_max
+        assert abs(s.c - flat_punch(gamma=gamma, mu=mu, level=3).c) <= s.error
+    assert time.perf_counter() - start < 15.0  # measured 1.5 s for the three
 
 
 @pytest.mark.parametrize("gamma, c", [(0.749, 0.96), (0.749, 0.99), (0.749, 1 - 1e-6), (2 / 3, 0.985),
                                       (2 / 3, 0.983), (0.5, 0.9995)])
 def test_bug4_above_c_max_raises_no_eigenvalue_error_naming_c_max(gamma, c):
-    # c_max = 0.9504, 0.9826, 0.9990 (1 - 8 exp(-pi/kappa)); 0.983 at gamma = 2/3 lies within the
-    # estimate's margin and reaches the solver first (measured 3.6 s), the others are refused at once
+    # c_max = 0.9511, 0.9827778, 0.9989970 (asymptotics.largest_stick_radius): refused at once
     start = time.perf_counter()
     with pytest.raises(NoEigenvalueError, match="c_max"):
         flat_punch(gamma=gamma, c=c)
@@ -260,8 +259,9 @@ def test_power_law_passes_rtol_through_but_not_to_the_law():
     # in mu), so power_law takes the solver even where flat_punch alone would take the law
     assert flat_punch(nu=0.45, c=0.5, rtol=1e-2).route.startswith("asymptotic")
     h = power_law(2, nu=0.45, c=0.5, rtol=1e-2)
-    assert h.flat.route.startswith("solver level 1")
+    assert h.flat.route.startswith("solver level 0")
     reference = power_law(2, nu=0.45, c=0.5, level=3)
     # the requested rtol is the contract (level 3 is ~1e-12, far inside it); the law route missed it for C at nu = 0.45
     assert abs(h.C - reference.C) <= 1e-2 * abs(reference.C) and abs(h.A - reference.A) <= 1e-2 * reference.A
-    assert power_law(2, nu=0.25, c=0.5, rtol=1e-11).flat.route.startswith("solver level 3")  # rtol reaches the levels
+    fine = power_law(2, nu=0.25, c=0.5, rtol=1e-11).flat  # rtol reaches the solver's levels and is met there
+    assert fine.route.startswith("solver level") and fine.error <= 1e-11 * fine.mu

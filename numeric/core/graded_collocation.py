@@ -4,7 +4,7 @@
 in the slip zone Q = mu P / t (q = mu p, (2.6b)) is substituted, so for 0 < c < 1 the system
 is D(mu) z = b with D(mu) = D0 + mu D1 and z = (P_stick, Q_stick, P_slip) (``system``); at
 c = 1 there is no slip zone and the system is linear (``adhesive_system``, ``solve_adhesive``).
-Matrices are factored after row and column equilibration (``equilibrate``, ``EquilibratedLU``).
+Matrices are factored after row and column equilibration (``numeric.core.linear_algebra``).
 ``FlatField`` is the discrete solution as piecewise Legendre series in u = t^2, with p, q and
 the slip u of (2.10); ``numeric.core.graded_eigen`` finds the mu at which it is the physical one.
 
@@ -20,14 +20,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as sla
 
 from asymptotics.arrays import read_only
 
+from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.graded_mesh import Discretisation, Elements, Resolution, abel_matrices, adhesive_discretisation
 from numeric.core.quadrature import gauss_rule, legendre_values
 
-__all__ = ["FlatField", "system", "adhesive_system", "equilibrate", "EquilibratedLU", "end_value_row", "flat_field",
+__all__ = ["FlatField", "system", "adhesive_system", "end_value_row", "flat_field",
            "solve_adhesive"]
 
 
@@ -147,26 +147,6 @@ def system(d: Discretisation, gamma: float) -> tuple[np.ndarray, np.ndarray, np.
     b[ra] = 1.0
     b[rl] = 1.0
     return D0, D1, b
-
-
-def equilibrate(D: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(scaled, rs, cs) with scaled = diag(rs) D diag(cs): columns scaled to unit max-norm, then rows."""
-    cs = 1.0 / np.max(np.abs(D), axis=0)
-    scaled = D * cs[None, :]
-    rs = 1.0 / np.max(np.abs(scaled), axis=1)
-    scaled *= rs[:, None]
-    return scaled, rs, cs
-
-
-class EquilibratedLU:
-    """LU (partial pivoting) of the equilibrated matrix ``equilibrate(D)``; ``solve(y)`` solves D z = y."""
-
-    def __init__(self, D: np.ndarray) -> None:
-        scaled, self.rs, self.cs = equilibrate(D)
-        self.lu = sla.lu_factor(scaled, overwrite_a=True, check_finite=False)
-
-    def solve(self, y: np.ndarray) -> np.ndarray:
-        return sla.lu_solve(self.lu, y * self.rs, check_finite=False) * self.cs
 
 
 def end_value_row(elements: Elements) -> np.ndarray:

@@ -37,7 +37,8 @@ from scipy.special import expit, logit
 from asymptotics.first_order import mu_over_gamma
 
 from numeric.core.errors import NoEigenvalueError, SolverError
-from numeric.core.graded_collocation import EquilibratedLU, FlatField, end_value_row, flat_field, system
+from numeric.core.graded_collocation import FlatField, end_value_row, flat_field, system
+from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.graded_mesh import Discretisation, Resolution, discretise
 from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
 

@@ -28,6 +28,7 @@ import numpy as np
 
 __all__ = [
     "COMPOSITE_NODES",
+    "graded_rule",
     "gauss_legendre",
     "gauss_rule",
     "padded_inverse_vandermonde",
@@ -160,3 +161,27 @@ def split_geometric(knots: np.ndarray) -> np.ndarray:
 def grade_to_zero(b1: float, levels: int = 64) -> np.ndarray:
     """Knots b1 2^-levels, ..., b1/2 (for integrands like t^n at t = 0)."""
     return b1 * 2.0 ** -np.arange(levels, 0, -1, dtype=float)
+
+
+@lru_cache(maxsize=None)
+def graded_rule(layers: int, ratio: float, nmax: int, nmin: int, dn: int) -> tuple[np.ndarray, np.ndarray]:
+    """Composite Gauss-Legendre on [0, 1] graded geometrically toward 0 (sorted nodes, weights; read-only).
+
+    Pieces [ratio^(j+1), ratio^j], j = 0 .. layers - 1, and [0, ratio^layers]; the piece j gets
+    max(nmin, nmax - dn j) nodes (an hp rule: integrands with an algebraic or logarithmic
+    singularity at 0 converge geometrically in the number of pieces).
+    """
+    xs, ws = [], []
+    hi = 1.0
+    for j in range(layers + 1):
+        lo = ratio * hi if j < layers else 0.0
+        x, w = gauss_legendre(max(nmin, nmax - dn * j))
+        xs.append(lo + 0.5 * (hi - lo) * (x + 1.0))
+        ws.append(0.5 * (hi - lo) * w)
+        hi = lo
+    x, w = np.concatenate(xs), np.concatenate(ws)
+    order = np.argsort(x)
+    x, w = x[order], w[order]
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w

@@ -1,20 +1,19 @@
 """The frictional flat punch: stick radius, friction, compliance and stresses ([S75] §2).
 
-Method, and why: piecewise polynomials in u = t^2 on an hp mesh graded geometrically
-toward the stick-slip boundary and the edge, collocation of (2.2) with every Abel integral
-done exactly, and the eigenvalue condition phi(c-) = 0 solved by a Krylov model of the
-linear system (``numeric.core``). The solution has power-type singularities at x = c and
-x = 1 whose exponents depend on mu (tan pi alpha = mu gamma), so a fixed singular basis would
-have to change during the eigenvalue iteration; geometric grading with low degree near those
-points and high degree away from them resolves any such exponent with exponential
-convergence in the number of unknowns, and keeps the matrices for a given mesh reusable
-(cached) across mu and gamma.
+Method, and why: the stresses have power-type singularities at x = c and x = 1 whose exponents
+are known from tan(pi alpha) = mu gamma (``numeric.core.charts``). The basis carries them:
+elements touching c and 1 hold the singular families in a square-root chart, the rest are
+polynomials in u = x^2 graded only to separate the scales; (2.2) is collocated with the Abel
+integrals done by rules that integrate the singular families exactly to rounding
+(``numeric.core.abel_rules``), and the eigenvalue condition phi(c-) = 0 is solved in
+theta = atan(mu gamma), which runs over [0, pi/2] as mu runs over [0, inf] (``numeric.core.
+eigenvalue``). About 150-300 unknowns give mu, P* and the stresses to ~1e-12.
 
 Routes (``route`` of the result names the one taken), each in its module: closed forms in the
 limits (``numeric.solutions.limits``); the asymptotic law mu/gamma = f0(c) (2.28) or
 f0 + gamma^2 f2 with error bounds measured against the solver (``numeric.solutions.law``); the
-solver at its resolution levels (``numeric.solutions.solver``), with a bracket for given mu
-beyond what it reaches near the largest stick radius c_max = 1 - 8 exp(-pi/kappa). The route
+solver at its resolution levels (``numeric.solutions.solver``), up to the largest stick radius
+c_max(gamma) (``asymptotics.largest_stick_radius``), which mu -> inf approaches. The route
 choice here asks each route once what it offers for ``rtol`` (whether its bound meets it, and
 at what cost) and takes the cheapest offer whose result meets it, warning
 (``AccuracyWarning``) where none does; without ``rtol`` the solver runs at ``level``. Below
@@ -31,13 +30,14 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
 
+from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
-from numeric.core.graded_mesh import LEVELS
 from numeric.solutions.law import LawRoute
 from numeric.solutions.limits import closed_form_given_c, closed_form_given_mu
-from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LEVEL_C_MIN, SolverRoute
+from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_MAX, SolverRoute
 from numeric.solutions.solution import FlatPunchSolution, first_meeting
 
 __all__ = ["flat_punch", "check_rtol", "level_and_rtol"]
@@ -53,11 +53,11 @@ def check_rtol(rtol) -> float:
 
 def _check_level(level) -> int:
     try:
-        ok = 1 <= int(level) < len(LEVELS) and int(level) == level
+        ok = 0 <= int(level) < len(RESOLUTIONS) and int(level) == level
     except (TypeError, ValueError, OverflowError):
         ok = False
     if not ok:
-        raise ValueError(f"level must be an integer in [1, {len(LEVELS) - 1}], got {level!r}")
+        raise ValueError(f"level must be an integer in [0, {len(RESOLUTIONS) - 1}], got {level!r}")
     return int(level)
 
 
@@ -91,15 +91,15 @@ def flat_punch(
     gamma : float, optional
         Coupling constant (2.2) instead of ``nu``.
     level : int, optional
-        Resolution level 1..4 of ``numeric.core.graded_mesh.LEVELS`` (the next coarser one gives
-        the error estimate); 2 (the default) reaches ~1e-10. Not together with ``rtol``.
+        Resolution level 0..4 of ``numeric.core.charts.RESOLUTIONS`` (the same resolution one degree
+        lower gives the error estimate); 2 (the default) reaches ~1e-11. Not together with ``rtol``.
     rtol : float, optional
         Relative accuracy wanted in the returned c (given mu) or mu (given c): the cheapest
         route whose error meets ``error <= rtol * value`` is taken. A closed form in the
         limits; else the asymptotic law for c <= 0.9 (first order (2.28) where its measured
         bound K2(gamma) gamma^2 meets rtol, else second order (2.28) + gamma^2 f2 where
         K4(gamma) gamma^4 does; ``numeric.solutions.law.K2_BOUNDS``, ``K4_BOUNDS``); else the solver at the first
-        level whose typical accuracy meets rtol (1: 1e-8, 2: 1e-10, 3: 1e-12, else 4), and
+        level whose typical accuracy meets rtol (0: 1e-8, 1: 1e-9, 2: 1e-11, 3: 1e-12, else 4), and
         finer levels while its ``error`` exceeds ``rtol * value``. If no route meets rtol,
         the most accurate result is returned with an ``AccuracyWarning``.
 
@@ -114,23 +114,17 @@ def flat_punch(
     Raises
     ------
     NoEigenvalueError
-        If c exceeds the largest stick radius, estimated as c_max = 1 - 8 exp(-pi/kappa),
-        kappa = (2/pi) atanh(gamma) (large gamma): at once above 1 - 7.5 exp(-pi/kappa), and
-        wherever the solver fails within 16 exp(-pi/kappa) of 1.
+        If c is at or above the largest stick radius c_max(gamma) (``numeric.largest_stick_radius``).
     SolverError
-        If even level 1 does not converge. A level is not tried below the smallest c it
-        reaches (``numeric.solutions.solver.LEVEL_C_MIN``: 5e-6, 5e-5, 5e-4, 1e-2); the next coarser one is used and
-        ``route`` says so. Below c = 1e-5 (``C_ASYMPTOTIC``; given mu: where the asymptotic
-        law puts c there) the asymptotic route (second order) is taken.
+        If the iteration does not converge. Below c = 1e-5 (``C_ASYMPTOTIC``; given mu: where the
+        asymptotic law puts c there) the asymptotic route (second order) is taken.
 
     Notes
     -----
-    Given mu, c lies below c_max for every finite mu, but mu(c) ~ 1/(c_max - c): the search
-    stops at c_top = 1 - 10 exp(-pi/kappa) (or 1 - 1e-9 where that is larger, small gamma). For
-    mu > mu(c_top) the result is a bracket: c = the midpoint of (c_top, min(1, 1 - 7.5
-    exp(-pi/kappa))], P* the midpoint of (P*(c_top), P*_adhesive (B4)], the half-widths as
-    ``error``; the stresses are those of the adhesive solution (App. B) at small gamma and of
-    the solution at c_top otherwise, as ``route`` says.
+    Given mu, c lies below c_max for every finite mu and tends to it like 1/mu; mu = inf is the
+    fully adhesive solution (App. B), not the limit of the frictional one (``numeric.slip_limit``).
+    Where the law puts 1 - c below 1e-13 (small gamma, large mu) the adhesive stresses are returned
+    with that c (``numeric.solutions.solver.GAP_ADHESIVE``).
 
     Examples
     --------
@@ -155,7 +149,7 @@ def _given_c(nu: float | None, gamma: float, c: float, level: int, rtol: float |
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, c, None)
-    solver = SolverRoute(nu, gamma, c, None, c, c)
+    solver = SolverRoute(nu, gamma, c, None, c)
     return _cheapest(law, solver, level, rtol, lambda sol: sol.mu, f"c < {C_ASYMPTOTIC:g}")
 
 
@@ -164,11 +158,16 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, None, mu)
-    solver = SolverRoute(nu, gamma, None, mu, law.bracket.lo, law.bracket.c)
+    gap_max = float(largest_stick_radius_gap(gamma))
+    if mu * gamma >= LAW_MU_GAMMA_MAX:  # far beyond the law: c is c_max to rounding, or 1 to within gap_max
+        solver = SolverRoute(nu, gamma, None, mu, 1.0, gap_max)
+        return solver.at_level(level) if rtol is None else (first_meeting(solver.offers(rtol), rtol, lambda s: s.c)
+                                                             or solver.best_effort(rtol))
+    solver = SolverRoute(nu, gamma, None, mu, law.bracket.c, max(law.gap, gap_max))
     try:
         return _cheapest(law, solver, level, rtol, lambda sol: sol.c, f"the law's c < {C_ASYMPTOTIC:g}")
     except SolverError:
-        if law.bracket.lo >= LEVEL_C_MIN[1]:
+        if law.bracket.lo >= C_ASYMPTOTIC:
             raise
         # the law's c is above C_ASYMPTOTIC but the true one below the solver's reach
         return law.last_resort(rtol, "the solver did not converge at this small c")

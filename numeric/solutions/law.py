@@ -209,6 +209,16 @@ class LawRoute:
             self._bracket = law_bracket(self.mu, self.gamma, 2)
         return self._bracket
 
+    @property
+    def gap(self) -> float:
+        """The second-order law's 1 - c for the given mu, formed without cancellation near c = 1:
+        (2.29) 1 - c = 2 exp(-pi mu/gamma') with gamma' = gamma (1 + gamma^2 f2/f0 at c = 0.999)."""
+        c = self.bracket.c
+        if c < 0.999:
+            return 1.0 - c
+        ratio = second_order.correction_ratio(second_order.C_MAX)
+        return 2.0 * math.exp(-math.pi * self.mu / (self.gamma * (1.0 + ratio * self.gamma**2)))
+
     def offers(self, rtol: float) -> list[Offer]:
         """One offer per order (0: (2.28), 2: + gamma^2 f2)."""
         return [Offer(LAW_SECONDS[order], lambda order=order: self._promises(order, rtol),

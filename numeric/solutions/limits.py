@@ -6,11 +6,9 @@ adhesive solution of Appendix B. ``closed_form_given_c`` and ``closed_form_given
 first whether the problem is one of these (exactly, at no cost); the first refuses a stick
 radius above the largest one.
 
-The largest stick radius (derivations/section_2_3.md, "Largest stick radius"): mu(c) of the
-full problem grows like 1/(c_max - c) with 1 - c_max = 8 exp(-pi/kappa), kappa = (2/pi)
-atanh(gamma); measured (1 - c_max) exp(pi/kappa) = 7.994 at gamma = 2/7 ... 0.5 and 7.926 at
-gamma = 2/3. ``gap_scale`` is exp(-pi/kappa); the constants below place the estimate, a safe
-upper bound and the top of the given-mu search.
+The largest stick radius c_max(gamma) < 1 (``asymptotics.largest_stick_radius``: K'/K = kappa,
+found from the limit problem mu -> inf): a stick radius at or above it has no friction
+coefficient.
 
 References
 ----------
@@ -27,40 +25,22 @@ import numpy as np
 
 from asymptotics.adhesive import compliance_adhesive, pressure_adhesive, shear_adhesive
 from asymptotics.first_order import frictionless_pressure
-from asymptotics.materials import kappa_from_gamma
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
 
 from numeric.core.errors import NoEigenvalueError
 from numeric.solutions.solution import FlatPunchSolution
 
 __all__ = [
     "ADHESIVE_EDGE_BREAKPOINTS",
-    "C_TOP",
-    "C_MAX_COEFFICIENT",
-    "C_MAX_UPPER_COEFFICIENT",
-    "C_SEARCH_COEFFICIENT",
     "ClosedForm",
     "closed_form",
     "closed_form_given_c",
     "closed_form_given_mu",
-    "gap_scale",
-    "c_search_top",
     "no_eigenvalue",
 ]
 
 ADHESIVE_EDGE_BREAKPOINTS = np.concatenate([[0.0, 0.5], 1.0 - 0.5 * 0.25 ** np.arange(1, 26), [1.0]])
 ADHESIVE_EDGE_BREAKPOINTS.setflags(write=False)  # smooth pieces of the closed forms, graded toward x = 1
-
-#: Largest stick radius the solver is asked for at small gamma; beyond it the answer is bracketed.
-C_TOP = 1.0 - 1e-9
-#: 1 - c_max ~ C_MAX_COEFFICIENT exp(-pi/kappa): the estimate quoted in messages.
-C_MAX_COEFFICIENT = 8.0
-#: c_max < 1 - C_MAX_UPPER_COEFFICIENT exp(-pi/kappa): 5 % below the smallest measured coefficient, 7.926.
-C_MAX_UPPER_COEFFICIENT = 7.5
-#: The given-mu search stops at c_top = 1 - C_SEARCH_COEFFICIENT exp(-pi/kappa), about 5 % of 1 - c_max
-#: below c_max; there mu ~ 40 ... 100 (measured at gamma = 2/3 ... 1/3 in derivations/section_2_3.md,
-#: level-2 error estimates 3e-5 ... 4e-2 of mu: the solver's error grows as c -> c_max).
-C_SEARCH_COEFFICIENT = 8.4
-
 
 @dataclass(frozen=True, slots=True)
 class ClosedForm:
@@ -100,13 +80,13 @@ def closed_form_given_c(nu: float | None, gamma: float, c: float) -> FlatPunchSo
     Raises
     ------
     NoEigenvalueError
-        If c is above the largest stick radius (at once above 1 - 7.5 exp(-pi/kappa)).
+        If c is at or above the largest stick radius c_max(gamma).
     """
     if c == 1.0:
         return closed_form(nu, gamma, math.inf, 1.0, True, "adhesive, App. B")
     if gamma == 0.0:
         return closed_form(nu, gamma, 0.0, c, False, "gamma = 0: no coupling, mu = 0 (2.28)")
-    if c > 1.0 - C_MAX_UPPER_COEFFICIENT * gap_scale(gamma):
+    if 1.0 - c <= float(largest_stick_radius_gap(gamma)):
         raise no_eigenvalue(c, gamma)
     return None
 
@@ -122,20 +102,9 @@ def closed_form_given_mu(nu: float | None, gamma: float, mu: float) -> FlatPunch
     return None
 
 
-def gap_scale(gamma: float) -> float:
-    """exp(-pi/kappa), kappa = (2/pi) atanh(gamma) ([S75] (4.10)): 1 - c_max is about 8 times this."""
-    return math.exp(-math.pi / float(kappa_from_gamma(gamma)))
-
-
-def c_search_top(gamma: float) -> float:
-    """Largest stick radius the given-mu search asks the solver for."""
-    return min(C_TOP, 1.0 - C_SEARCH_COEFFICIENT * gap_scale(gamma))
-
-
 def no_eigenvalue(c: float, gamma: float, detail: str = "") -> NoEigenvalueError:
-    """The error for a stick radius above the largest one, naming the estimate of c_max."""
-    c_max = 1.0 - C_MAX_COEFFICIENT * gap_scale(gamma)
+    """The error for a stick radius above the largest one, naming c_max (``asymptotics.largest_stick_radius``)."""
+    gap = float(largest_stick_radius_gap(gamma))
     return NoEigenvalueError(
         f"no friction coefficient gives stick radius c = {c!r} at gamma = {gamma:.6g}: the largest stick radius is "
-        f"estimated as c_max = 1 - 8 exp(-pi/kappa) = {c_max:.6g} (kappa = (2/pi) atanh(gamma); mu -> inf as "
-        f"c -> c_max; derivations/section_2_3.md){detail}")
+        f"c_max = 1 - {gap:.10g} (K'(c_max)/K(c_max) = kappa = (2/pi) atanh(gamma); mu -> inf as c -> c_max){detail}")

@@ -1,15 +1,21 @@
-"""The solver route of ``numeric.flat_punch``: the hp solver of ``numeric.core`` at its resolution levels.
+"""The solver route of ``numeric.flat_punch``: the singular-basis solver of ``numeric.core`` at its levels.
 
-``error`` is the difference between two resolution levels (the one returned and the next
-coarser), an upper estimate of the returned level's error because the levels converge
-exponentially (tests check it against a finer level). Where mu gamma > 1 the singularity
-at c becomes nearly a jump (exponent 1/2 - alpha -> 0) and convergence can stall; then a
-third level is solved and the larger difference is reported if they do not shrink tenfold.
+Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is the
+difference between the level and the same problem one polynomial degree lower
+(``numeric.core.charts.partner``), at least ``ERROR_FLOOR`` times the value (the rounding
+level of the eigenvalue condition). Measured against level 4 (``tests/test_singular_solver.py``,
+``derivations/benchmark.md``) the true error lies below this estimate and within a factor 10
+of it.
 
-Each level converges only above a smallest stick radius (``LEVEL_C_MIN``); below, the next
-coarser level is used and ``route`` says so; below ``C_ASYMPTOTIC`` the solver is not offered.
-Given mu, beyond what the solver reaches near the largest stick radius the answer is a bracket
-(``near_full_stick``).
+Given c: Newton in theta = atan(mu gamma) from a guess (the Chebyshev table, else the
+second-order law). Given mu: the secant method in logit(c) from a guess (the table, else the
+law, or the largest stick radius when the law's c exceeds it); no bracket is needed near full
+stick, where mu -> inf is the regular limit theta -> pi/2. Below ``C_ASYMPTOTIC`` the solver is
+not offered (the law is the answer, ``numeric.solutions.law``). Given mu, where the law puts
+1 - c below ``GAP_ADHESIVE`` (mu of order gamma log(1/gap)/pi at small gamma) the slip annulus
+is thinner than 1e-13 of the radius and P* and the stresses at 1 - x > 1e-12 differ from the
+adhesive ones by less than the level's error (measured: P* - P*_adhesive ~ 0.3 gap^0.87): the
+result is the adhesive solution (App. B) with that c, and ``route`` says so.
 
 References
 ----------
@@ -21,184 +27,163 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import replace
+
+import numpy as np
+from scipy.special import logit
 
 from asymptotics.adhesive import compliance_adhesive
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
+from asymptotics.second_order import mu_over_gamma_second_order, stick_radius_second_order
 
-from numeric.core.graded_collocation import FlatField
-from numeric.core.errors import NoEigenvalueError, SolverError
-from numeric.core.graded_eigen import AboveTopError, solve_c, solve_mu
-from numeric.core.graded_mesh import LEVELS
-from numeric.core.table import table_available, table_friction_coefficient
-from numeric.solutions.limits import (ADHESIVE_EDGE_BREAKPOINTS, C_MAX_COEFFICIENT, C_MAX_UPPER_COEFFICIENT, C_TOP,
-                                      ClosedForm, c_search_top, gap_scale, no_eigenvalue)
+from numeric.core.charts import RESOLUTIONS, Resolution, partner
+from numeric.core.eigenvalue import solve_given_c as core_given_c
+from numeric.core.eigenvalue import solve_given_theta
+from numeric.core.fields import SingularField
+from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
+from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, no_eigenvalue
 from numeric.solutions.solution import FlatPunchSolution, Offer, warn_unmet
 
-__all__ = ["DEFAULT_LEVEL", "LEVEL_C_MIN", "C_ASYMPTOTIC", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS", "SolverRoute",
-           "solve_given_c", "solve_given_mu", "near_full_stick"]
+__all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
+           "SolverRoute", "solve_given_c", "solve_given_mu", "from_field"]
 
 DEFAULT_LEVEL = 2
-#: Smallest stick radius at which each level's eigenvalue iteration converges. Measured with
-#: ``numeric.core.graded_eigen.solve_mu`` at gamma = 0.1, 0.3, 0.5, 0.75: level 1 converged at 2e-6 and 5e-6;
-#: level 2 failed at 2e-5 (gamma = 0.3) and 3e-5 (0.1, 0.3), converged at 5e-5; level 3 failed at
-#: 2e-4, 3e-4, converged at 5e-4; level 4 failed at 1e-3 ... 5e-3, converged at 1e-2. A failing
-#: iteration spends 5-25 s before SolverError, so a level is not tried below its floor.
-LEVEL_C_MIN = {1: 5e-6, 2: 5e-5, 3: 5e-4, 4: 1e-2}
-#: Below this stick radius the asymptotic law replaces the solver (twice level 1's floor).
+#: Below this stick radius the asymptotic law replaces the solver (the layout needs ~40 elements at 1e-5).
 C_ASYMPTOTIC = 1e-5
-#: Typical relative accuracy of each level (numeric.core.graded_mesh.LEVELS); rtol picks the first that meets it.
-LEVEL_TYPICAL_ERROR = {1: 1e-8, 2: 1e-10, 3: 1e-12}
-#: Rough run time in seconds of a solve at each level with its error estimate (derivations/benchmark.md),
-#: for ordering the routes.
-LEVEL_SECONDS = {1: 0.02, 2: 0.04, 3: 0.15, 4: 0.5}
+#: Given mu, below this 1 - c the answer is the adhesive solution with the law's c (see the module docstring).
+GAP_ADHESIVE = 1e-13
+#: Above this mu gamma the law is not consulted for a guess (it overflows; c is near c_max or 1 anyway).
+LAW_MU_GAMMA_MAX = 1e6
+#: Relative floor of the error estimate: below it two levels agree only to rounding and to the Abel
+#: rules' 1e-13 (measured: levels 3 and 4 differ by up to 6e-13 relative where both converged).
+ERROR_FLOOR = 2e-13
+#: Typical relative accuracy of each level (the worst measured, ``RESOLUTIONS``); rtol picks the first that meets it.
+LEVEL_TYPICAL_ERROR = {0: 1e-8, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}
+#: Rough run time in seconds of a solve with its error estimate (derivations/benchmark.md), for ordering routes.
+LEVEL_SECONDS = {0: 0.008, 1: 0.010, 2: 0.016, 3: 0.025, 4: 0.04}
 
 
-def from_field(nu: float | None, fine: FlatField, level: int, error: float) -> FlatPunchSolution:
-    """The solver's discrete solution as a ``FlatPunchSolution``."""
+def from_field(nu: float | None, field: SingularField, level: int, error: float, mu: float | None = None
+               ) -> FlatPunchSolution:
+    """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu)."""
     return FlatPunchSolution(
         nu=nu,
-        gamma=fine.gamma,
-        mu=fine.mu,
-        c=fine.c,
-        compliance=fine.compliance,
+        gamma=field.gamma,
+        mu=field.mu if mu is None else mu,
+        c=field.c,
+        compliance=field.compliance,
         error=error,
-        route=f"solver level {level}, {fine.n_unknowns} unknowns",
-        breakpoints=fine.breakpoints,
-        _field=fine,
-    )
-
-
-def error_estimate(fields: list[FlatField]) -> float:
-    """Difference of the two finest levels, or, where it has not shrunk tenfold from the
-    next pair (convergence stalling as alpha -> 1/2, mu gamma large), the larger of the two."""
-    diffs = [max(abs(a.mu - b.mu), abs(a.compliance - b.compliance)) for a, b in zip(fields, fields[1:])]
-    if len(diffs) == 2 and diffs[0] > 0.1 * diffs[1]:
-        return max(diffs)
-    return diffs[0]
-
-
-def solve_given_c(nu: float | None, c: float, gamma: float, level: int) -> FlatPunchSolution:
-    """mu for stick radius c at ``level``, the next coarser level giving the error estimate."""
-    # the table's mu (7e-12, recorded at build) centres the LU: the Krylov root is then local, no second LU
-    guess = float(table_friction_coefficient(c, gamma)[0]) if table_available() else math.nan
-    guess = None if math.isnan(guess) else guess
-    try:
-        fields = [solve_mu(c, gamma, LEVELS[lv], mu_guess=guess) for lv in (level, level - 1)]
-        if fields[0].mu * gamma > 1.0 and level >= 2:  # alpha > 1/4: convergence can stall, look one level further
-            fields.append(solve_mu(c, gamma, LEVELS[level - 2], mu_guess=guess))
-    except (SolverError, NoEigenvalueError) as exc:
-        if c > 1.0 - 2.0 * C_MAX_COEFFICIENT * gap_scale(gamma):  # within twice 1 - c_max of 1
-            raise no_eigenvalue(c, gamma, f"; the solver: {exc}") from None
-        raise
-    return from_field(nu, fields[0], level, error_estimate(fields))
-
-
-def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_guess: float) -> FlatPunchSolution:
-    """The stick radius for friction mu at ``level`` (``numeric.core.graded_eigen.solve_c``), or the bracket
-    near full stick where mu exceeds what the search reaches."""
-    try:
-        fine, error = solve_c(mu, gamma, LEVELS[level], LEVELS[level - 1], c_guess=c_guess,
-                              c_top=c_search_top(gamma))
-    except AboveTopError:
-        return near_full_stick(nu, gamma, mu, level)
-    return from_field(nu, fine, level, error)
-
-
-def near_full_stick(nu: float | None, gamma: float, mu: float, level: int) -> FlatPunchSolution:
-    """mu > mu_c(c_top), c_top = ``c_search_top``: by monotonicity in mu (c and P* increase, §2.1),
-    c_top < c <= c_hi and P*(c_top) < P* <= P0*, c_hi = 1 at small gamma (c_top = 1 - 1e-9), else
-    1 - 7.5 exp(-pi/kappa) (above c_max); return the midpoints with half-widths (plus the solver's
-    error at c_top) as the error. Stresses: the adhesive closed form (App. B) at small gamma (exact
-    outside the slip annulus of width < 1e-9 only in the limit), else the solution at c_top."""
-    top_c = c_search_top(gamma)
-    edge = solve_mu(top_c, gamma, LEVELS[level], mu_guess=mu)
-    edge_coarse = solve_mu(top_c, gamma, LEVELS[level - 1], mu_guess=mu)
-    if edge.mu > mu:  # the coarse search overshot: not in the near-full-stick regime after all
-        raise SolverError(f"stick radius for mu = {mu}, gamma = {gamma:.6g} not bracketed below {top_c}")
-    adhesive = float(compliance_adhesive(gamma))
-    solver_error = abs(edge.compliance - edge_coarse.compliance)
-    c_hi = min(1.0, 1.0 - C_MAX_UPPER_COEFFICIENT * gap_scale(gamma))
-    small_gamma = top_c == C_TOP
-    if small_gamma:
-        what, field, breakpoints = "adhesive stresses (App. B)", ClosedForm(gamma, True), ADHESIVE_EDGE_BREAKPOINTS
-    else:
-        what = f"c_max ~ 1 - 8 exp(-pi/kappa); stresses of the solution at c = {top_c:.6g} (mu = {edge.mu:.6g})"
-        field, breakpoints = edge, edge.breakpoints
-    return FlatPunchSolution(
-        nu=nu,
-        gamma=gamma,
-        mu=mu,
-        c=0.5 * (top_c + c_hi),
-        compliance=0.5 * (adhesive + edge.compliance),
-        error=max(0.5 * (c_hi - top_c), 0.5 * abs(adhesive - edge.compliance) + solver_error),
-        route=f"bracketed: mu > mu_c({top_c:.12g}) = {edge.mu:.6g}, so {top_c:.12g} < c <= {c_hi:.12g}; {what}",
-        breakpoints=breakpoints,
+        route=f"solver level {level}, {field.n_unknowns} unknowns",
+        breakpoints=field.breakpoints,
         _field=field,
     )
 
 
-class SolverRoute:
-    """The solver for one problem (exactly one of c and mu given) at the levels that reach ``c_low``.
+def _theta_guess(c: float, gamma: float) -> float:
+    """atan(mu gamma) from the table (7e-12) or the second-order law."""
+    mu = float(np.ravel(table_friction_coefficient(np.array([c]), np.array([gamma])))[0]) if table_available() else math.nan
+    if math.isnan(mu):
+        mu = gamma * float(mu_over_gamma_second_order(c, gamma))
+    return math.atan(mu * gamma)
 
-    ``c_low`` is the stick radius, or a lower bound of it (the law's bracket, given mu); a
-    level is never run below its floor ``LEVEL_C_MIN``. ``reaches`` is false below
-    ``C_ASYMPTOTIC``. ``offers(rtol)`` are the levels whose typical accuracy meets rtol,
-    ``best_effort`` the most accurate of them (or the finest level reached) when none did,
-    and ``at_level(level)`` the result without rtol.
+
+def _logit_guess(mu: float, gamma: float) -> float:
+    """logit(c) from the table, else the second-order law, kept below the largest stick radius."""
+    c = float(np.ravel(table_stick_radius(np.array([mu]), np.array([gamma])))[0]) if table_available() else math.nan
+    if not 0.0 < c < 1.0 and mu * gamma < LAW_MU_GAMMA_MAX:
+        c = float(stick_radius_second_order(mu, gamma=gamma))
+    if not 0.0 < c < 1.0:
+        c = 1.0
+    gap_max = float(largest_stick_radius_gap(gamma))
+    gap = max(1.0 - c, 1.5 * gap_max, 1e-300)
+    if c <= 0.0:
+        c = C_ASYMPTOTIC
+    return math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)
+
+
+def _error(fine: SingularField, coarse: SingularField, value: Callable[[SingularField], float]) -> float:
+    scale = max(abs(value(fine)), abs(fine.compliance))
+    return max(abs(value(fine) - value(coarse)), abs(fine.compliance - coarse.compliance), ERROR_FLOOR * scale)
+
+
+def solve_given_c(nu: float | None, c: float, gamma: float, level: int) -> FlatPunchSolution:
+    """mu for stick radius c at ``level``; the partner resolution gives the error estimate."""
+    gap = 1.0 - c
+    if gap <= float(largest_stick_radius_gap(gamma)):
+        raise no_eigenvalue(c, gamma)
+    res = RESOLUTIONS[level]
+    fine = SingularField(core_given_c(c, gap, gamma, _theta_guess(c, gamma), res))
+    coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
+    return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.mu))
+
+
+def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_guess: float | None = None
+                   ) -> FlatPunchSolution:
+    """The stick radius for friction mu at ``level`` (secant in logit c at theta = atan(mu gamma))."""
+    theta = math.atan(mu * gamma)
+    start = _logit_guess(mu, gamma) if c_guess is None else float(logit(c_guess))
+    res: Resolution = RESOLUTIONS[level]
+    fine = SingularField(solve_given_theta(theta, gamma, start, res))
+    coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap), partner(res)))
+    return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.c), mu)
+
+
+def nearly_adhesive(nu: float | None, gamma: float, mu: float, gap: float) -> FlatPunchSolution:
+    """mu so large for this gamma that 1 - c < GAP_ADHESIVE: the adhesive solution with c = 1 - gap."""
+    adhesive = float(compliance_adhesive(gamma))
+    return FlatPunchSolution(
+        nu=nu, gamma=gamma, mu=mu, c=1.0 - gap, compliance=adhesive,
+        error=max(gap, 0.3 * gap**0.87),
+        route=f"adhesive stresses (App. B): the law puts 1 - c = {gap:.3g} < {GAP_ADHESIVE:g}, below what the "
+              "stresses resolve",
+        breakpoints=ADHESIVE_EDGE_BREAKPOINTS, _field=ClosedForm(gamma, True))
+
+
+class SolverRoute:
+    """The solver for one problem (exactly one of c and mu given) at its levels.
+
+    ``reaches`` is false where the stick radius (or, given mu, the law's estimate of it) is
+    below ``C_ASYMPTOTIC``. ``offers(rtol)`` are the levels whose typical accuracy meets rtol,
+    ``best_effort`` the most accurate result run (or level 4) when none did, and
+    ``at_level(level)`` the result without rtol.
     """
 
-    def __init__(self, nu: float | None, gamma: float, c: float | None, mu: float | None, c_low: float,
-                 c_estimate: float):
+    def __init__(self, nu: float | None, gamma: float, c: float | None, mu: float | None, c_estimate: float,
+                 gap_estimate: float = 1.0):
         self.reaches = c_estimate >= C_ASYMPTOTIC
-        self.top = max([lv for lv in LEVEL_C_MIN if LEVEL_C_MIN[lv] <= c_low] + [1])
+        self.top = len(RESOLUTIONS) - 1
         self._value: Callable[[FlatPunchSolution], float]
         if c is not None:
             self._solve = lambda level: solve_given_c(nu, c, gamma, level)
             self._value = lambda sol: sol.mu
+        elif gap_estimate < GAP_ADHESIVE:
+            self._solve = lambda level: nearly_adhesive(nu, gamma, mu, gap_estimate)
+            self._value = lambda sol: sol.c
         else:
-            self._solve = lambda level: solve_given_mu(nu, mu, gamma, level, c_estimate)
+            self._solve = lambda level: solve_given_mu(nu, mu, gamma, level)
             self._value = lambda sol: sol.c
         self._results: list[FlatPunchSolution] = []
 
-    def _with_fallback(self, level: int) -> FlatPunchSolution:
-        """The solve at ``level``, or, where it does not converge (very small c), the next coarser
-        level with the route saying so; the error estimate is then that level's own."""
-        try:
-            return self._solve(level)
-        except SolverError:
-            if level <= 1:
-                raise
-            sol = self._with_fallback(level - 1)
-            return replace(sol, route=f"{sol.route} (level {level} did not converge)")
-
     def at_level(self, level: int) -> FlatPunchSolution:
-        """The solution at ``level`` (no rtol), or at the finest level below it that reaches c."""
-        sol = self._with_fallback(min(level, self.top))
-        if self.top < level:
-            sol = replace(sol, route=f"{sol.route} (level {level} does not reach c < {LEVEL_C_MIN[level]:g})")
-        return sol
+        """The solution at ``level`` (no rtol)."""
+        return self._solve(level)
 
     def _start(self, rtol: float) -> int:
-        return next((lv for lv, e in LEVEL_TYPICAL_ERROR.items() if e <= rtol), 4)
+        return next((lv for lv, e in LEVEL_TYPICAL_ERROR.items() if e <= rtol), self.top)
 
     def offers(self, rtol: float) -> list[Offer]:
-        """One offer per level from the first whose typical accuracy meets rtol to the finest reached."""
+        """One offer per level from the first whose typical accuracy meets rtol to the finest."""
         return [Offer(LEVEL_SECONDS[lv], lambda: True, lambda lv=lv: self._run(lv))
                 for lv in range(self._start(rtol), self.top + 1)]
 
     def _run(self, level: int) -> FlatPunchSolution:
-        sol = self._with_fallback(level)
+        sol = self._solve(level)
         self._results.append(sol)
         return sol
 
     def best_effort(self, rtol: float) -> FlatPunchSolution:
-        """The most accurate level run (the finest reached, if rtol asked for more), with an
-        ``AccuracyWarning``."""
+        """The most accurate level run (the finest, if rtol asked for more), with an ``AccuracyWarning``."""
         if not self._results:
             self._run(self.top)
         best = min(self._results, key=lambda sol: sol.error)
-        if self.top < 4:
-            best = replace(best, route=f"{best.route} (level {self.top + 1} does not reach c < "
-                                       f"{LEVEL_C_MIN[self.top + 1]:g})")
         warn_unmet(best, rtol, self._value(best))
         return best

@@ -45,7 +45,8 @@ from asymptotics.adhesive import central_pressure_adhesive, pressure_adhesive_mp
 from asymptotics.materials import gamma_from_nu
 
 from numeric.core import table_data
-from numeric.core.graded_collocation import EquilibratedLU, adhesive_system, end_value_row, equilibrate, solve_adhesive, system
+from numeric.core.linear_algebra import EquilibratedLU, equilibrate
+from numeric.core.graded_collocation import adhesive_system, end_value_row, solve_adhesive, system
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.graded_eigen import solve_mu
 from numeric.core.graded_mesh import LEVELS, Resolution, discretise

@@ -1,0 +1,293 @@
+"""The singular basis of the flat-punch solver: elements, charts and the local exponents ([S75] §2).
+
+The stresses of the frictional flat punch are analytic in u = x^2 except at the stick-slip
+boundary u = c^2 and at the edge u = 1, where their behaviour is known
+(``shared/spec/reformulation.md``, checked here by fits to independent solutions):
+
+- at x = c, on both sides, p and q/x are A(s) + s^beta B(s) with A, B analytic in
+  s = sqrt|u - c^2| (half-integer powers of |x - c| come from the Abel integrals),
+  beta = 1 - 2 alpha, tan(pi alpha) = mu gamma ([S75] (2.15));
+- at x = 1, p = t^(alpha - 1/2) [A(t) + t log t B(t)], t = 1 - u: the exponent of the
+  frictional edge and, because every alpha - 1/2 + k is again a local exponent, a
+  resonant logarithm one order higher.
+
+So the basis carries them: elements touching c^2 ("stick end", "slip end") use the chart
+u = c^2 -/+ L s^2 with Legendre polynomials in s and the singular family h_beta(s) times
+low-degree polynomials; the element touching 1 ("edge") uses u = 1 - L s^2 with the weight
+s^(2 alpha - 1) (= t^(alpha - 1/2)) times polynomials in s, and s^2 log s times the same
+weight; all other elements ("plain") are polynomials in u. Elements are graded
+geometrically toward c^2 and 1 only so far as to separate the scales (each plain element
+is no longer than its distance to c^2 or 1), not to resolve the singularities, which the
+basis carries: about 150 unknowns give mu to 1e-11 (``derivations/benchmark.md``).
+
+h_beta(s) = (s^beta - s)/(beta - 1) for beta > 1/2 and (s^beta - 1)/beta for beta <= 1/2
+spans, with the polynomials, the same functions as s^beta, but stays a well-conditioned
+basis function as beta -> 1 (mu gamma -> 0, where it tends to s log s) and as beta -> 0
+(mu -> inf, log s: the limit problem of the largest stick radius).
+
+Points are stored as an anchor (c^2 or 1) plus an offset, so elements of width 1e-12 next
+to c^2 or 1 lose no digits, and 1 - c is taken as given (``gap``) rather than formed.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import special
+
+from numeric.core.quadrature import gauss_legendre, legendre_values
+
+__all__ = [
+    "PLAIN", "STICK_END", "SLIP_END", "EDGE", "STICK", "SLIP", "AT_C2", "AT_ONE",
+    "Resolution", "RESOLUTIONS", "partner", "Layout", "layout", "h_beta", "family_factors", "basis_values",
+    "shifted_legendre", "chart_offset", "chart_of_offset", "COLLOCATION_POWER", "collocation_chart", "collocation",
+]
+
+PLAIN, STICK_END, SLIP_END, EDGE = 0, 1, 2, 3
+"""Element kinds: polynomial in u; touching c^2 from the stick side; from the slip side; touching u = 1."""
+STICK, SLIP = 0, 1
+"""Zones."""
+AT_C2, AT_ONE = 0, 1
+"""Anchors: offsets are measured from c^2 or from 1."""
+
+
+@dataclass(frozen=True, slots=True)
+class Resolution:
+    """Degrees and layout of the singular basis.
+
+    degree: Legendre degree on the singular elements; singular_degree: degree of the
+    polynomial multiplying the singular family at c (edge_singular_degree: the logarithmic
+    family at the edge; higher degrees are nearly polynomials, which only spoils the
+    conditioning: coefficients of 5e5 with 3 at the edge against 2e3 with 1); plain_degree: degree on plain elements
+    (default: ``degree``); c_fraction: the two elements touching c^2 have length
+    c_fraction * min(c^2, 1 - c^2); grading: ratio of successive plain elements; edge_fraction:
+    the edge element has length edge_fraction * (1 - c^2).
+    """
+
+    degree: int = 12
+    singular_degree: int = 3
+    edge_singular_degree: int = 1
+    plain_degree: int | None = None
+    c_fraction: float = 0.25
+    grading: float = 2.0
+    edge_fraction: float = 0.25
+
+    @property
+    def plain(self) -> int:
+        return self.degree if self.plain_degree is None else self.plain_degree
+
+
+#: Resolution levels 0-4, coarse to fine; level 2 is the default. Measured against level 4 over
+#: nu in [-0.5, 0.45], c in [0.01, 0.995] (``tests/test_singular_solver.py``): mu and P* to about
+#: 1e-9 (level 0), 1e-10 (1), 2e-12 (2), 3e-13 (3).
+RESOLUTIONS: tuple[Resolution, ...] = (
+    Resolution(degree=7, singular_degree=2),
+    Resolution(degree=9, singular_degree=2),
+    Resolution(degree=12, singular_degree=3),
+    Resolution(degree=15, singular_degree=3),
+    Resolution(degree=18, singular_degree=3),
+)
+
+
+def partner(res: Resolution) -> Resolution:
+    """The resolution one degree lower: its difference from ``res`` is the error estimate."""
+    return Resolution(res.degree - 1, res.singular_degree, res.edge_singular_degree,
+                      None if res.plain_degree is None else res.plain_degree - 1, res.c_fraction, res.grading,
+                      res.edge_fraction)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Layout:
+    """Elements for one stick radius: kind, zone, anchor and offsets [lo, hi] from the anchor."""
+
+    c: float
+    gap: float        # 1 - c
+    c2: float         # c^2
+    w: float          # 1 - c^2, formed from gap
+    kind: np.ndarray
+    zone: np.ndarray
+    anchor: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    degree: np.ndarray
+    singular_degree: np.ndarray
+    n_basis: np.ndarray
+    starts: np.ndarray  # first basis index of each element, total last
+
+    def __len__(self) -> int:
+        return self.kind.size
+
+    def length(self, e: int) -> float:
+        return float(self.hi[e] - self.lo[e])
+
+    def anchor_value(self, e: int) -> float:
+        return self.c2 if self.anchor[e] == AT_C2 else 1.0
+
+    @property
+    def n_stick(self) -> int:
+        """Basis functions (= collocation points) in the stick zone."""
+        return int(self.n_basis[self.zone == STICK].sum())
+
+    @property
+    def stick_end(self) -> int:
+        return int(np.flatnonzero(self.kind == STICK_END)[0])
+
+
+def _frozen(values, dtype) -> np.ndarray:
+    a = np.array(values, dtype=dtype)
+    a.setflags(write=False)
+    return a
+
+
+def layout(c: float, gap: float, res: Resolution) -> Layout:
+    """The elements for stick radius c = 1 - gap (0 < c < 1); gap is used for 1 - c^2."""
+    c2 = c * c
+    w = gap * (2.0 - gap)
+    Lc = res.c_fraction * min(c2, w)
+    q = res.grading
+    els = []  # (kind, zone, anchor, lo, hi, degree, singular degree)
+    d = Lc
+    stick = []
+    while d < c2 * (1.0 - 1e-15):  # plain stick elements, each no longer than (q - 1) x its distance to c^2
+        step = d * (q - 1.0)
+        nd = c2 if d + step > c2 - 0.5 * step else d + step
+        stick.append((PLAIN, STICK, AT_C2, -nd, -d, res.plain, 0))
+        d = nd
+    els += stick[::-1]
+    els.append((STICK_END, STICK, AT_C2, 0.0, Lc, res.degree, res.singular_degree))
+    els.append((SLIP_END, SLIP, AT_C2, 0.0, Lc, res.degree, res.singular_degree))
+    Le = min(res.edge_fraction * w, w - Lc)
+    top = w - Le
+    a = Lc  # offset from c^2
+    while a < top * (1.0 - 1e-15):  # no longer than (q - 1) x the distance to c^2, nor the distance to 1 / q
+        step = min(a * (q - 1.0), (w - a) / q)
+        b = top if a + step > top - 0.5 * step else a + step
+        if a < 0.5 * w:
+            els.append((PLAIN, SLIP, AT_C2, a, b, res.plain, 0))
+        else:
+            els.append((PLAIN, SLIP, AT_ONE, a - w, b - w, res.plain, 0))
+        a = b
+    els.append((EDGE, SLIP, AT_ONE, 0.0, Le, res.degree, res.edge_singular_degree))
+    kind, zone, anchor, lo, hi, deg, sdeg = zip(*els)
+    kind = np.array(kind)
+    nb = np.array(deg) + 1 + np.where(kind == PLAIN, 0, np.array(sdeg) + 1)
+    return Layout(c, gap, c2, w, _frozen(kind, int), _frozen(zone, int), _frozen(anchor, int), _frozen(lo, float),
+                  _frozen(hi, float), _frozen(deg, int), _frozen(sdeg, int), _frozen(nb, int),
+                  _frozen(np.concatenate([[0], np.cumsum(nb)]), int))
+
+
+def h_beta(beta: float, s: np.ndarray) -> np.ndarray:
+    """The singular family at c: (s^beta - s)/(beta - 1) (beta > 1/2) or (s^beta - 1)/beta (beta <= 1/2).
+
+    Stable as beta -> 1 (-> s log s) and beta -> 0 (-> log s); at s = 0 it is 0 (beta > 1/2),
+    -1/beta (0 < beta <= 1/2) or -inf (beta = 0).
+    """
+    s = np.asarray(s, dtype=float)
+    pos = s > 0.0
+    ls = np.log(np.where(pos, s, 1.0))
+    if beta > 0.5:
+        d = beta - 1.0
+        out = s * (ls if d == 0.0 else special.expm1(d * ls) / d)
+        at_zero = 0.0
+    else:
+        out = ls if beta == 0.0 else special.expm1(beta * ls) / beta
+        at_zero = -np.inf if beta == 0.0 else -1.0 / beta
+    return np.where(pos, out, at_zero)
+
+
+def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = False
+                   ) -> tuple[np.ndarray | None, np.ndarray]:
+    """Factors of the two families on a singular element at chart points s.
+
+    Stick/slip end: (None, h_beta(s)), beta = 1 - 2 alpha; edge: (s^(2 alpha - 1), s^(2 alpha + 1) log s).
+    ``displacement``: the families of u* = x int_x^1 q - gamma int_0^x t p (one Abel order
+    smoother): at c, where u* vanishes from the slip side like s^2 and s^(1 + beta), (s^2, s h_beta);
+    at the edge (None, s^(2 alpha)).
+    """
+    if kind in (STICK_END, SLIP_END):
+        if displacement:  # u* = 0 at c with no linear term: s^2 A(s) + s^(1 + beta) B(s)
+            beta = 1.0 - 2.0 * alpha
+            # s h_beta is (s^(1+beta) - s^2)/(beta - 1) for beta > 1/2; below, h_beta carries a constant, which
+            # would put a linear term into u*: there s^(1+beta) itself (s log s in the limit beta = 0)
+            singular = s * (h_beta(beta, s) if beta > 0.5 or beta == 0.0 else s**beta)
+            return s * s, singular
+        return None, h_beta(1.0 - 2.0 * alpha, s)
+    pos = s > 1e-300  # below, the weights of every rule are 0 (and s^(2 alpha - 1) could overflow)
+    sp = np.where(pos, s, 1.0)
+    if displacement:
+        return None, np.where(pos, sp ** (2.0 * alpha), 0.0)
+    weight = np.where(pos, sp ** (2.0 * alpha - 1.0), 0.0)
+    return weight, weight * np.where(pos, sp * sp * np.log(sp), 0.0)
+
+
+def shifted_legendre(k: int, s: np.ndarray) -> np.ndarray:
+    """P_0 .. P_k (2 s - 1), stacked on the last axis."""
+    return np.moveaxis(legendre_values(2.0 * np.asarray(s, dtype=float) - 1.0, k), 0, -1)
+
+
+def basis_values(lay: Layout, e: int, s: np.ndarray, alpha: float, legendre: np.ndarray | None = None,
+                 displacement: bool = False) -> np.ndarray:
+    """The basis functions of element e at chart points s: shape s.shape + (n_basis[e],).
+
+    ``legendre`` may pass shifted_legendre(degree, s) when it is cached; ``displacement`` selects
+    the families of u* (see ``family_factors``).
+    """
+    P = shifted_legendre(int(lay.degree[e]), s) if legendre is None else legendre
+    kind = int(lay.kind[e])
+    if kind == PLAIN:
+        return P
+    regular, singular = family_factors(kind, np.asarray(s, dtype=float), alpha, displacement)
+    head = P if regular is None else regular[..., None] * P
+    return np.concatenate([head, singular[..., None] * P[..., : int(lay.singular_degree[e]) + 1]], axis=-1)
+
+
+def chart_offset(lay: Layout, e: int, s: np.ndarray) -> np.ndarray:
+    """Offset from the element's anchor of chart points s."""
+    kind = int(lay.kind[e])
+    L = lay.length(e)
+    if kind == PLAIN:
+        return lay.lo[e] + L * s
+    if kind == SLIP_END:
+        return L * s * s
+    return -L * s * s  # stick end (anchor c^2), edge (anchor 1)
+
+
+def chart_of_offset(lay: Layout, e: int, offset: np.ndarray) -> np.ndarray:
+    """Chart points of offsets (from the element's anchor) inside element e (inverse of chart_offset)."""
+    kind = int(lay.kind[e])
+    L = lay.length(e)
+    if kind == PLAIN:
+        return np.clip((offset - lay.lo[e]) / L, 0.0, 1.0)
+    sign = 1.0 if kind == SLIP_END else -1.0
+    return np.sqrt(np.clip(sign * offset / L, 0.0, 1.0))
+
+
+#: Collocation points on a singular element are r^POWER at the Gauss points r of [0, 1]: the enriched
+#: space is badly determined by Gauss points in s (interpolation of A(s) + s^beta B(s) at K = 15,
+#: 5 singular functions: 1e-9 ... 5e-7), well by points clustered toward the singular end
+#: (r^2: 1e-13 ... 4e-13 at the stick-slip boundary; r^1.5: 3e-15 at the edge).
+COLLOCATION_POWER = {PLAIN: 1.0, STICK_END: 1.25, SLIP_END: 1.25, EDGE: 1.25}
+
+
+def collocation_chart(kind: int, n: int) -> np.ndarray:
+    """The n collocation points of an element of this kind, in its chart (sorted, in (0, 1))."""
+    r = 0.5 * (gauss_legendre(n)[0] + 1.0)
+    power = COLLOCATION_POWER[kind]
+    return r if power == 1.0 else r ** power
+
+
+def collocation(lay: Layout) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Collocation points, element by element: anchor codes, offsets, and x = sqrt(u)."""
+    anchors, offsets = [], []
+    for e in range(len(lay)):
+        s = collocation_chart(int(lay.kind[e]), int(lay.n_basis[e]))
+        anchors.append(np.full(s.size, lay.anchor[e]))
+        offsets.append(chart_offset(lay, e, s))
+    anchor, offset = np.concatenate(anchors), np.concatenate(offsets)
+    return anchor, offset, np.sqrt(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)

@@ -1,0 +1,185 @@
+"""The eigenvalue relation of [S75] §2.2 on the singular basis: theta for given c, c for given theta.
+
+theta = atan(mu gamma) = pi alpha runs over [0, pi/2] as mu runs over [0, inf]; the system
+D(theta) z = b of ``numeric.core.operators`` is analytic in theta, and the eigenvalue
+condition G = l(theta) . z = 0 (phi(c-) = 0) picks the friction.
+
+Given c: Newton in theta on G with an LU per step (z and the adjoint of l from one
+factorisation); the basis carries alpha = theta / pi of the previous step, and the outer
+loop stops when theta moves by less than 1e-9 relative (the computed theta changes by ~1e-9
+per unit change of the basis exponent, measured, so the last outer step changes nothing).
+
+Given theta (alpha known exactly): the secant method in xi = log(c / (1 - c)) on G, each step
+a new layout. theta = pi/2 is the limit mu -> inf: its root is the largest stick radius c_max.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import optimize
+
+from numeric.core.charts import Layout, Resolution, layout
+from numeric.core.errors import NoEigenvalueError, SolverError
+from numeric.core.linear_algebra import EquilibratedLU
+from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
+
+__all__ = ["Eigensolution", "solve_given_c", "solve_given_theta"]
+
+HALF_PI = 0.5 * math.pi
+ALPHA_TOLERANCE = 1e-9
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Eigensolution:
+    """theta and the coefficients z of the solution on ``system`` (D(theta) z = b, l . z = 0)."""
+
+    system: CollocationSystem
+    theta: float
+    coefficients: np.ndarray
+    newton_step: float  # size of the last Newton step in theta (0 when theta was given)
+
+    @property
+    def layout(self) -> Layout:
+        return self.system.layout
+
+
+def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, max_steps: int = 30):
+    """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
+
+    Returns theta, z and the last step. Stops when a step is below tol relative, or once the
+    steps stop shrinking (at least fourfold) while below 1e-8 relative: Newton has reached the
+    rounding floor of G, and the last step measures it."""
+    previous = math.inf
+    for _ in range(max_steps):
+        lu = EquilibratedLU(system.matrix(theta))
+        z = lu.solve(system.rhs)
+        l = system.functional(theta)
+        y = lu.solve_transposed(l)
+        dG = system.functional_derivative(theta) @ z - y @ (system.matrix_derivative(theta) @ z)
+        step = (l @ z) / dG
+        new = theta - step
+        if new >= HALF_PI:  # beyond mu = inf: the root, if any, is at or below pi/2
+            if theta == HALF_PI:
+                raise NoEigenvalueError("the stick radius lies above the largest one (mu = inf)")
+            new = HALF_PI
+        elif new <= 0.0:
+            new = 0.5 * theta
+        size = abs(new - theta)
+        if size <= 1e-9 * theta and previous == math.inf:  # first step from a close guess: the next is ~1e-18
+            dz = -lu.solve(system.matrix_derivative(theta) @ z)
+            return new, z + (new - theta) * dz, size
+        if size <= tol * theta or (size <= 1e-8 * theta and size >= 0.25 * previous):
+            return new, z, size
+        if size > 0.5 * previous and size > 1e-6 * theta:
+            raise SolverError(f"Newton in theta is not converging (step {step:.3g})")
+        previous = size
+        theta = new
+    raise SolverError(f"Newton in theta did not converge (last step {step:.3g})")
+
+
+def _functional_at(ops: AbelOperators, gamma: float, theta: float) -> float:
+    """G(theta) with the basis carrying alpha = theta / pi."""
+    system = collocation_system(ops, gamma, theta / math.pi)
+    lu = EquilibratedLU(system.matrix(theta))
+    return float(system.functional(theta) @ lu.solve(system.rhs))
+
+
+def _bracket_theta(ops: AbelOperators, gamma: float, theta: float) -> float:
+    """Root of G by Brent's method (scipy) on a bracket found by stepping out from theta.
+
+    G < 0 below the eigenvalue and > 0 above it, but it is not monotone and the discrete
+    system is singular at isolated theta far from the root (poles of G, where |G| is huge), so
+    Newton from a poor guess can run away and a sign change alone is not a root: the bracket
+    is grown in steps of 1.3 in mu from the guess, and a sign change is accepted when Brent's
+    root has |G| below the values at its ends (a pole has it above)."""
+    mu0 = math.tan(theta)
+    points = [math.atan(mu0 * 1.3 ** k) for k in range(-40, 41)]
+    points = sorted(set(p for p in points if 0.0 < p < HALF_PI) | {theta, HALF_PI})
+    start = points.index(theta)
+    values = {theta: _functional_at(ops, gamma, theta)}
+    for radius in range(1, len(points)):
+        for j in (start - radius, start + radius):
+            if not 0 <= j < len(points):
+                continue
+            for a, b in ((points[j], points[j + 1]) if j + 1 < len(points) else (None, None),
+                         (points[j - 1], points[j]) if j > 0 else (None, None)):
+                if a is None:
+                    continue
+                for t in (a, b):
+                    if t not in values:
+                        values[t] = _functional_at(ops, gamma, t)
+                if values[a] * values[b] < 0.0:
+                    root = optimize.brentq(lambda t: _functional_at(ops, gamma, t), a, b, xtol=1e-14, rtol=1e-12)
+                    if abs(_functional_at(ops, gamma, root)) < min(abs(values[a]), abs(values[b])):
+                        return root
+    raise NoEigenvalueError("no friction coefficient gives this stick radius (no root of the eigenvalue condition)")
+
+
+def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: Resolution,
+                  max_outer: int = 8) -> Eigensolution:
+    """theta = atan(mu gamma) for stick radius c = 1 - gap, from a guess.
+
+    Newton with the basis exponent from the guess (fast path); if it fails to converge,
+    Brent's method on a bracket, then Newton again from its root."""
+    ops = AbelOperators(layout(c, gap, res))
+    theta = theta_guess
+    bracketed = False
+    outer = 0
+    while outer < max_outer:
+        outer += 1
+        system = collocation_system(ops, gamma, theta / math.pi)
+        try:
+            new, z, step = _newton_theta(system, theta)
+        except SolverError:
+            if bracketed:
+                raise
+            theta, bracketed = _bracket_theta(ops, gamma, theta), True
+            continue
+        done = abs(new - theta) <= ALPHA_TOLERANCE * new
+        theta = new
+        if done:
+            return Eigensolution(system, theta, z, step)
+    raise SolverError(f"the basis exponent did not settle for c = {c}, gamma = {gamma}")
+
+
+def _residual(c_logit: float, theta: float, gamma: float, res: Resolution):
+    c = 1.0 / (1.0 + math.exp(-c_logit))
+    gap = 1.0 / (1.0 + math.exp(c_logit))
+    system = collocation_system(AbelOperators(layout(c, gap, res)), gamma, theta / math.pi)
+    lu = EquilibratedLU(system.matrix(theta))
+    z = lu.solve(system.rhs)
+    return system.functional(theta) @ z, system, z
+
+
+def solve_given_theta(theta: float, gamma: float, c_logit_guess: float, res: Resolution, *, step: float = 1e-3,
+                      tol: float = 1e-14, max_steps: int = 40) -> Eigensolution:
+    """Stick radius for theta = atan(mu gamma) (pi/2: mu = inf, c = c_max) by the secant method in
+    xi = log(c / (1 - c)) from a guess.
+
+    G(xi) is smooth up to the small jumps where the layout changes (an element boundary moves
+    with c; they are of the size of the discretisation error), so the iteration also stops when
+    its steps, below 1e-8, stop shrinking; the returned ``newton_step`` is the last step in xi."""
+    x0, x1 = c_logit_guess, c_logit_guess + step
+    g0, _, _ = _residual(x0, theta, gamma, res)
+    g1, system, z = _residual(x1, theta, gamma, res)
+    previous = math.inf
+    for _ in range(max_steps):
+        if g1 == g0:
+            return Eigensolution(system, theta, z, abs(x1 - x0))
+        x2 = x1 - g1 * (x1 - x0) / (g1 - g0)
+        x0, g0 = x1, g1
+        x1 = x2
+        g1, system, z = _residual(x1, theta, gamma, res)
+        size = abs(x1 - x0)
+        if size <= tol * max(1.0, abs(x1)) or (size <= 1e-8 and size >= 0.25 * previous):
+            return Eigensolution(system, theta, z, size)
+        previous = size
+    raise SolverError(f"the secant iteration in c did not converge for theta = {theta}, gamma = {gamma}")

@@ -1,0 +1,157 @@
+"""Stresses, slip and compliance of a flat-punch solution on the singular basis ([S75] (2.1), (2.4), (2.10)).
+
+p and q are evaluated from the basis, so their singular behaviour at x = c and x = 1 is
+exact: there is no interpolation between nodes and no loss at x = c itself or at 1 - x = 1e-5.
+The slip u of (2.10) is (2/(pi x)) times the lower Abel integral of u* over (c, x); u* is
+known at the slip collocation points from (2.2b) and interpolated in the slip elements'
+basis, which carries the behaviour of u* at both ends (one Abel order smoother than p).
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cached_property
+
+import numpy as np
+
+from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, Layout, basis_values, chart_of_offset,
+                     collocation_chart)
+from numeric.core.eigenvalue import Eigensolution
+from numeric.core.operators import AbelOperators
+
+__all__ = ["SingularField", "point_offsets"]
+
+
+def point_offsets(lay: Layout, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Anchor codes and offsets of points x in [0, 1]: from c^2 up to the middle of the slip zone, else from 1."""
+    x = np.asarray(x, dtype=float)
+    to_one = x > 0.5 * (lay.c + 1.0)
+    anchor = np.where(to_one, AT_ONE, AT_C2)
+    offset = np.where(to_one, -(1.0 - x) * (1.0 + x), (x - lay.c) * (x + lay.c))
+    return anchor, offset
+
+
+class SingularField:
+    """p, q, u and P* of an ``Eigensolution`` (theta = atan(mu gamma))."""
+
+    def __init__(self, solution: Eigensolution) -> None:
+        self.solution = solution
+        sys = solution.system
+        self.layout = sys.layout
+        self.gamma = sys.gamma
+        self.theta = solution.theta
+        self.alpha = sys.alpha
+        self.c = self.layout.c
+        self.n_unknowns = solution.coefficients.size
+        ns = sys.n_stick
+        z = solution.coefficients
+        self._P, self._Q, self._R = z[:ns], z[ns:2 * ns], z[2 * ns:]
+        self.compliance = float(0.25 * math.pi * (sys.integral[:ns] @ self._P
+                                                 + math.cos(self.theta) * (sys.integral[ns:] @ self._R)))  # (2.4)
+
+    @property
+    def mu(self) -> float:
+        return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
+
+    @cached_property
+    def breakpoints(self) -> np.ndarray:
+        """Element ends in x, with points graded geometrically (ratio 1/4) toward c and 1 between which
+        p and q are smooth enough for composite quadrature (the power-law transforms)."""
+        lay = self.layout
+        c = lay.c
+        k = 0.25 ** np.arange(1, 26)
+        ends = [np.sqrt(lay.anchor_value(e) + np.array([lay.lo[e], lay.hi[e]]) * (1 if lay.kind[e] in (PLAIN, SLIP_END) else -1))
+                for e in range(len(lay))]
+        points = np.concatenate(ends + [[0.0, c, 1.0], c * (1.0 - k), c + lay.gap * k, 1.0 - lay.gap * k])
+        points = np.unique(np.clip(points, 0.0, 1.0))
+        points.setflags(write=False)
+        return points
+
+    def edge_value(self, shear: bool) -> float:
+        """p and q at x = 1: infinite, (1 - x)^(alpha - 1/2); at mu = inf p = 0 there and q is bounded."""
+        return math.inf
+
+    def _evaluate(self, x: np.ndarray, zone: int, coefficients: np.ndarray) -> np.ndarray:
+        """Sum of the basis of the elements of ``zone`` at points x (which must lie in that zone)."""
+        lay = self.layout
+        anchor, offset = point_offsets(lay, x)
+        out = np.zeros(x.shape)
+        done = np.zeros(x.shape, bool)
+        base = 0 if zone == STICK else lay.n_stick
+        for e in np.flatnonzero(lay.zone == zone):
+            ae = lay.anchor[e]
+            off_e = np.where(anchor == ae, offset, offset + (lay.w if ae == AT_C2 else -lay.w))  # offset from A_e
+            if lay.kind[e] == PLAIN:
+                lo, hi = lay.lo[e], lay.hi[e]
+            elif lay.kind[e] == SLIP_END:
+                lo, hi = 0.0, lay.hi[e]
+            else:  # stick end, edge: u = A - L s^2
+                lo, hi = -lay.hi[e], 0.0
+            inside = ~done & (off_e >= lo) & (off_e <= hi)
+            if not np.any(inside):
+                continue
+            s = chart_of_offset(lay, e, off_e[inside])
+            coef = coefficients[lay.starts[e] - base: lay.starts[e + 1] - base]
+            out[inside] = basis_values(lay, e, s, self.alpha) @ coef
+            done |= inside
+        return out
+
+    def pressure(self, x: np.ndarray) -> np.ndarray:
+        """p(x), 0 <= x < 1 (infinite at x = 1 for 0 <= mu < inf)."""
+        x = np.asarray(x, dtype=float)
+        stick = x < self.layout.c
+        out = np.empty(x.shape)
+        out[stick] = self._evaluate(x[stick], STICK, self._P)
+        out[~stick] = math.cos(self.theta) * self._evaluate(x[~stick], SLIP, self._R)
+        return out
+
+    def shear(self, x: np.ndarray) -> np.ndarray:
+        """q(x) = x Q in the stick zone, mu p = R sin(theta)/gamma in the slip annulus."""
+        x = np.asarray(x, dtype=float)
+        stick = x < self.layout.c
+        out = np.empty(x.shape)
+        out[stick] = x[stick] * self._evaluate(x[stick], STICK, self._Q)
+        slip = self._evaluate(x[~stick], SLIP, self._R)
+        # q = mu p (2.6b) as the product, so that it holds to the last bit; R/gamma at mu = inf
+        out[~stick] = (self.mu * (math.cos(self.theta) * slip) if self.theta < 0.5 * math.pi
+                       else slip / self.gamma)
+        return out
+
+    @cached_property
+    def _u_star_coefficients(self) -> np.ndarray:
+        """u* of (2.2b) interpolated at the slip collocation points in each slip element's basis."""
+        sys = self.solution.system
+        lay = self.layout
+        values = sys.u_star(self.theta, self.solution.coefficients)
+        ns = lay.n_stick
+        out = np.empty(values.size)
+        for e in np.flatnonzero(lay.zone == SLIP):
+            rows = slice(int(lay.starts[e]) - ns, int(lay.starts[e + 1]) - ns)
+            B = basis_values(lay, e, collocation_chart(int(lay.kind[e]), int(lay.n_basis[e])), self.alpha, displacement=True)
+            out[rows] = np.linalg.solve(B, values[rows])
+        return out
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        """u(x) = (2/(pi x)) int_c^x t u*(t) dt / sqrt(x^2 - t^2) (2.10): 0 on the stick zone, < 0 in the annulus."""
+        x = np.asarray(x, dtype=float)
+        out = np.zeros(x.shape)
+        outer = x > self.layout.c
+        if not np.any(outer):
+            return out
+        lay = self.layout
+        xs = x[outer]
+        slip_elements = np.flatnonzero(lay.zone == SLIP)
+        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=slip_elements)
+        mats = ops.matrices(self.alpha, displacement=True)
+        coef = self._u_star_coefficients
+        ns = lay.n_stick
+        total = np.zeros(xs.size)
+        for e in slip_elements:
+            total += mats[e]["lower"] @ coef[lay.starts[e] - ns: lay.starts[e + 1] - ns]
+        out[outer] = (2.0 / math.pi) * total / xs
+        return out

@@ -1,0 +1,42 @@
+"""Equilibrated LU: the one factorisation both solvers use.
+
+The collocation matrices mix columns of very different size (stresses near the edge, the
+singular families, the shear columns scaled by mu), so rows and columns are scaled to unit
+max-norm before the LU (partial pivoting, LAPACK through scipy). ``solve_transposed`` gives the
+adjoint solves that the derivative of the eigenvalue condition needs.
+
+References
+----------
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+
+__all__ = ["equilibrate", "EquilibratedLU"]
+
+
+def equilibrate(D: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(scaled, rs, cs) with scaled = diag(rs) D diag(cs): columns scaled to unit max-norm, then rows."""
+    cs = 1.0 / np.max(np.abs(D), axis=0)
+    scaled = D * cs[None, :]
+    rs = 1.0 / np.max(np.abs(scaled), axis=1)
+    scaled *= rs[:, None]
+    return scaled, rs, cs
+
+
+class EquilibratedLU:
+    """LU of ``equilibrate(D)``; ``solve(y)`` solves D z = y, ``solve_transposed(y)`` solves D^T z = y."""
+
+    def __init__(self, D: np.ndarray) -> None:
+        scaled, self.rs, self.cs = equilibrate(D)
+        self.lu = sla.lu_factor(scaled, overwrite_a=True, check_finite=False)
+
+    def solve(self, y: np.ndarray) -> np.ndarray:
+        return sla.lu_solve(self.lu, y * self.rs, check_finite=False) * self.cs
+
+    def solve_transposed(self, y: np.ndarray) -> np.ndarray:
+        return sla.lu_solve(self.lu, y * self.cs, trans=1, check_finite=False) * self.rs

@@ -1,0 +1,123 @@
+"""The Abel rules of the singular basis (``numeric.core.abel_rules``) against mpmath.
+
+Every basis function of every element kind, at points inside the element (near and far from its
+singular end), just outside either end (down to 1e-12 of the element) and far away, in both
+directions, for alpha from 0.01 to 0.49 (beta = 1 - 2 alpha from 0.98 to 0.02, the edge weight
+s^(2 alpha - 1) from s^-0.98 to s^-0.02). The reference is tanh-sinh quadrature at 30 digits with
+break points at the singular end, at the point and graded toward a nearby outside point.
+Tolerance 1e-12 relative to max(1, |value|): measured worst 2.3e-11 before the inner pieces of
+the graded rules kept enough nodes, 1.3e-11 since, that one at a point 1.8e-11 beyond a plain
+element, where the test's own double-rounded geometry (c^2 + (1 - c^2) != 1 by 1e-17) shifts the
+distance by 1e-6 relative; elsewhere <= 2e-13. So points closer than 1e-10 of an element are
+checked at 1e-10.
+"""
+
+import mpmath
+import numpy as np
+import pytest
+
+from numeric.core.charts import AT_C2, AT_ONE, PLAIN, SLIP_END, STICK_END, Resolution, layout
+from numeric.core.operators import AbelOperators
+
+LAY = layout(0.6, 0.4, Resolution(degree=12, singular_degree=3, edge_singular_degree=1))
+
+
+def _basis_mp(e: int, j: int, s, alpha):
+    kind, K = int(LAY.kind[e]), int(LAY.degree[e])
+    k = j if j <= K else j - K - 1
+    P = mpmath.legendre(k, 2 * s - 1)
+    if kind == PLAIN or j <= K and kind in (STICK_END, SLIP_END):
+        return P
+    if kind in (STICK_END, SLIP_END):
+        b = 1 - 2 * mpmath.mpf(alpha)
+        return ((s**b - s) / (b - 1) if b > 0.5 else (s**b - 1) / b) * P
+    w = s ** (2 * mpmath.mpf(alpha) - 1)
+    return w * P if j <= K else w * s**2 * mpmath.log(s) * P
+
+
+def _exact(e: int, j: int, v, upper: bool, alpha: float):
+    kind = int(LAY.kind[e])
+    A = mpmath.mpf(LAY.c2 if LAY.anchor[e] == AT_C2 else 1.0)
+    lo, hi = mpmath.mpf(LAY.lo[e]), mpmath.mpf(LAY.hi[e])
+    L = hi - lo
+
+    def u_of(s):
+        if kind == PLAIN:
+            return A + lo + L * s
+        return A + L * s * s if kind == SLIP_END else A - L * s * s
+
+    def integrand(s):
+        d = u_of(s) - v
+        if (upper and d <= 0) or (not upper and d >= 0):
+            return mpmath.mpf(0)
+        jacobian = L if kind == PLAIN else 2 * L * s
+        return _basis_mp(e, j, s, alpha) * jacobian / (2 * mpmath.sqrt(abs(d)))
+
+    points = [mpmath.mpf(0), mpmath.mpf(1)]
+    if kind == PLAIN:
+        position = (v - A - lo) / L
+        if 0 < position < 1:
+            points.insert(1, position)
+        for distance, end in ((-position, 0), (position - 1, 1)):
+            if 0 < distance < 1:
+                points += [abs(end - distance * 10**k) for k in range(40) if distance * 10**k < 1]
+    else:
+        s2 = (v - A) / L if kind == SLIP_END else (A - v) / L
+        if 0 < s2 < 1:
+            points.insert(1, mpmath.sqrt(s2))
+        elif s2 < 0:
+            points += [mpmath.sqrt(-s2) * mpmath.mpf(10)**k for k in range(-3, 40) if mpmath.sqrt(-s2) * 10**k < 1]
+        elif s2 - 1 < 1:
+            points += [1 - (s2 - 1) * mpmath.mpf(10)**k for k in range(40) if (s2 - 1) * 10**k < 1]
+    return mpmath.quad(integrand, sorted(set(points)))
+
+
+def _points(e: int) -> list[tuple[float, float]]:
+    """(v, distance from the element relative to its length; 0 inside)."""
+    kind, L = int(LAY.kind[e]), LAY.length(e)
+    A = LAY.c2 if LAY.anchor[e] == AT_C2 else 1.0
+    if kind == PLAIN:
+        u_lo, u_hi = A + LAY.lo[e], A + LAY.hi[e]
+        out = [(u_lo + L * t, 0.0) for t in (1e-9, 0.3, 0.999999)]
+        out += [(u_lo - L * t, t) for t in (1e-10, 0.5)] + [(u_hi + L * t, t) for t in (1e-10, 2.0)]
+    elif kind == SLIP_END:
+        out = [(A + L * s * s, 0.0) for s in (1e-4, 0.02, 0.5, 0.99)]
+        out += [(A - L * t, t) for t in (1e-12, 1e-5, 0.5)] + [(A + L * (1 + t), t) for t in (1e-10, 0.1)]
+    else:
+        out = [(A - L * s * s, 0.0) for s in (1e-4, 0.02, 0.5, 0.99)]
+        out += [(A + L * t, t) for t in (1e-12, 1e-5)] + [(A - L * (1 + t), t) for t in (1e-10, 0.1)]
+    return [(v, t) for v, t in out if 0.0 < v < 1.0]
+
+
+SINGULAR_ELEMENTS = [int(e) for e in np.flatnonzero(LAY.kind != PLAIN)] + [int(np.flatnonzero(LAY.kind == PLAIN)[-1])]
+
+
+@pytest.mark.parametrize("e", SINGULAR_ELEMENTS)
+def test_rules_match_mpmath(e):
+    """The three singular elements and a plain one at alpha = 0.01, the hardest for the edge weight."""
+    _check(e, 0.01)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("alpha", [0.01, 0.3, 0.49])
+@pytest.mark.parametrize("e", range(len(LAY)))
+def test_rules_match_mpmath_everywhere(e, alpha):
+    _check(e, alpha)
+
+
+def _check(e: int, alpha: float) -> None:
+    pts = _points(e)
+    vs = np.array([v for v, _ in pts])
+    anchor = np.array([AT_C2 if abs(v - LAY.c2) < abs(v - 1.0) else AT_ONE for v in vs])
+    offset = vs - np.where(anchor == AT_C2, LAY.c2, 1.0)
+    mats = AbelOperators(LAY, (anchor, offset), elements=np.array([e])).matrices(alpha)[e]
+    K, m = int(LAY.degree[e]), int(LAY.n_basis[e])
+    columns = [0, K] + ([K + 1, m - 1] if LAY.kind[e] != PLAIN else [])
+    with mpmath.workdps(30):
+        for upper in (True, False):
+            M = mats["upper" if upper else "lower"]
+            for i, (v, distance) in enumerate(pts):
+                tol = 1e-10 if 0.0 < distance < 1e-9 else 1e-12
+                for j in columns:
+                    exact = float(_exact(e, j, mpmath.mpf(v), upper, alpha))
+                    assert abs(M[i, j] - exact) <= tol * max(1.0, abs(exact)), (e, v, upper, j, M[i, j], exact)

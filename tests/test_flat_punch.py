@@ -23,9 +23,6 @@ from asymptotics.adhesive import pressure_adhesive_mp, shear_adhesive_mp
 from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_dissimilar
 from numeric import NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
-from numeric.core.graded_mesh import LEVELS
-from numeric.core.graded_collocation import solve_adhesive
-from numeric.core.graded_eigen import solve_mu
 from numeric.studies.paper_tables import PAPER
 from numeric.baseline.scheme import solve_friction
 

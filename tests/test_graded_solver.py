@@ -5,7 +5,6 @@ check the graded solver itself against closed forms (App. B, (4.10)) and its own
 They are the tests the graded solver had when it was the public one.
 """
 
-import math
 
 import mpmath
 import numpy as np

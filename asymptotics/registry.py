@@ -27,7 +27,8 @@ __all__ = ["PARTS", "registry", "get", "part"]
 
 # part -> (document title, derivation modules contributing to it)
 PARTS: Mapping[str, tuple[str, tuple[str, ...]]] = MappingProxyType({
-    "2.3": ("§2.3 Solution by successive approximations", ("asymptotics.derive.first_order", "asymptotics.derive.second_order")),
+    "2.3": ("§2.3 Solution by successive approximations", ("asymptotics.derive.first_order", "asymptotics.derive.second_order",
+                                                            "asymptotics.derive.largest_stick_radius")),
     "3": ("§3 The Hertzian indentor: power-law transforms", ("asymptotics.derive.similarity",)),
     "B": ("Appendix B, (4.10), (4.18): the adhesive solution", ("asymptotics.derive.adhesive",)),
 })

@@ -67,8 +67,8 @@ def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, m
         step = (l @ z) / dG
         new = theta - step
         if new >= HALF_PI:  # beyond mu = inf: the root, if any, is at or below pi/2
-            if theta == HALF_PI:
-                raise NoEigenvalueError("the stick radius lies above the largest one (mu = inf)")
+            if theta == HALF_PI:  # the caller brackets instead (c >= c_max is refused before, by the closed form)
+                raise SolverError("Newton in theta left (0, pi/2]")
             new = HALF_PI
         elif new <= 0.0:
             new = 0.5 * theta

@@ -22,7 +22,7 @@ import numpy as np
 from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, Layout, basis_values, chart_of_offset,
                      collocation_chart)
 from numeric.core.eigenvalue import Eigensolution
-from numeric.core.operators import AbelOperators
+from numeric.core.operators import AbelOperators, normal_factor
 
 __all__ = ["SingularField", "point_offsets"]
 
@@ -52,7 +52,7 @@ class SingularField:
         z = solution.coefficients
         self._P, self._Q, self._R = z[:ns], z[ns:2 * ns], z[2 * ns:]
         self.compliance = float(0.25 * math.pi * (sys.integral[:ns] @ self._P
-                                                 + math.cos(self.theta) * (sys.integral[ns:] @ self._R)))  # (2.4)
+                                                 + normal_factor(self.theta) * (sys.integral[ns:] @ self._R)))  # (2.4)
 
     @property
     def mu(self) -> float:
@@ -107,7 +107,7 @@ class SingularField:
         stick = x < self.layout.c
         out = np.empty(x.shape)
         out[stick] = self._evaluate(x[stick], STICK, self._P)
-        out[~stick] = math.cos(self.theta) * self._evaluate(x[~stick], SLIP, self._R)
+        out[~stick] = normal_factor(self.theta) * self._evaluate(x[~stick], SLIP, self._R)
         return out
 
     def shear(self, x: np.ndarray) -> np.ndarray:
@@ -118,7 +118,7 @@ class SingularField:
         out[stick] = x[stick] * self._evaluate(x[stick], STICK, self._Q)
         slip = self._evaluate(x[~stick], SLIP, self._R)
         # q = mu p (2.6b) as the product, so that it holds to the last bit; R/gamma at mu = inf
-        out[~stick] = (self.mu * (math.cos(self.theta) * slip) if self.theta < 0.5 * math.pi
+        out[~stick] = (self.mu * (normal_factor(self.theta) * slip) if self.theta < 0.5 * math.pi
                        else slip / self.gamma)
         return out
 

@@ -36,7 +36,7 @@ from numeric.core.abel_rules import (NEAR_OUTSIDE, gauss01, plain_inside_rule, p
                          sqrt_inside_rule, sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, shifted_legendre)
 
-__all__ = ["AbelOperators", "CollocationSystem", "collocation_system"]
+__all__ = ["AbelOperators", "CollocationSystem", "collocation_system", "normal_factor"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -282,7 +282,7 @@ class CollocationSystem:
         """u* = x int_x^1 q / sqrt(t^2 - x^2) - gamma int_0^x t p / sqrt(x^2 - t^2) (2.2b) at the slip points."""
         ns = self.n_stick
         slip = z[2 * ns:]
-        return (self.u_star_stick @ z[: 2 * ns] + math.cos(theta) * (self.u_star_normal @ slip)
+        return (self.u_star_stick @ z[: 2 * ns] + normal_factor(theta) * (self.u_star_normal @ slip)
                 + _shear_factor(theta, self.gamma) * (self.u_star_shear @ slip))
 
     @property
@@ -290,14 +290,14 @@ class CollocationSystem:
         return self.end_row.size
 
     def matrix(self, theta: float) -> np.ndarray:
-        return np.concatenate([self.stick, math.cos(theta) * self.normal + _shear_factor(theta, self.gamma) * self.shear],
+        return np.concatenate([self.stick, normal_factor(theta) * self.normal + _shear_factor(theta, self.gamma) * self.shear],
                               axis=1)
 
     def matrix_derivative(self, theta: float) -> np.ndarray:
         """d D / d theta (zero on the stick columns)."""
         n, ns = self.rhs.size, self.n_stick
         out = np.zeros((n, n))
-        out[:, 2 * ns:] = -math.sin(theta) * self.normal + (math.cos(theta) / self.gamma) * self.shear
+        out[:, 2 * ns:] = -math.sin(theta) * self.normal + (normal_factor(theta) / self.gamma) * self.shear
         return out
 
     def functional(self, theta: float) -> np.ndarray:
@@ -305,15 +305,20 @@ class CollocationSystem:
         ns = self.n_stick
         out = np.zeros(self.rhs.size)
         out[:ns] = _shear_factor(theta, self.gamma) * self.end_row
-        out[ns: 2 * ns] = -math.cos(theta) * self.layout.c * self.end_row
+        out[ns: 2 * ns] = -normal_factor(theta) * self.layout.c * self.end_row
         return out
 
     def functional_derivative(self, theta: float) -> np.ndarray:
         ns = self.n_stick
         out = np.zeros(self.rhs.size)
-        out[:ns] = (math.cos(theta) / self.gamma) * self.end_row
+        out[:ns] = (normal_factor(theta) / self.gamma) * self.end_row
         out[ns: 2 * ns] = math.sin(theta) * self.layout.c * self.end_row
         return out
+
+
+def normal_factor(theta: float) -> float:
+    """cos(theta), exactly 0 at theta = pi/2 (mu = inf: no pressure on the slip annulus)."""
+    return 0.0 if theta >= 0.5 * math.pi else math.cos(theta)
 
 
 def _shear_factor(theta: float, gamma: float) -> float:

@@ -33,11 +33,13 @@ from scipy.special import logit
 
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
-from asymptotics.second_order import mu_over_gamma_second_order, stick_radius_second_order
+from asymptotics.first_order import mu_over_gamma
+from asymptotics.second_order import C_MAX, correction_ratio, stick_radius_second_order
 
 from numeric.core.charts import RESOLUTIONS, Resolution, partner
 from numeric.core.eigenvalue import solve_given_c as core_given_c
 from numeric.core.eigenvalue import solve_given_theta
+from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.fields import SingularField
 from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
 from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, no_eigenvalue
@@ -79,11 +81,17 @@ def from_field(nu: float | None, field: SingularField, level: int, error: float,
 
 
 def _theta_guess(c: float, gamma: float) -> float:
-    """atan(mu gamma) from the table (7e-12) or the second-order law."""
+    """atan(mu gamma) from the table (7e-12); else the second-order law (its gamma^2 f2/f0 held at c = 0.999
+    above), or, within 50 (1 - c_max) of c_max, the approach mu gamma ~ 1.3 (1 - c_max)/(c_max - c)
+    (``numeric.solutions.slip_limit``: A/(1 - c_max) = 1.19 ... 1.52 for gamma = 0.75 ... 0.3)."""
     mu = float(np.ravel(table_friction_coefficient(np.array([c]), np.array([gamma])))[0]) if table_available() else math.nan
-    if math.isnan(mu):
-        mu = gamma * float(mu_over_gamma_second_order(c, gamma))
-    return math.atan(mu * gamma)
+    if not math.isnan(mu):
+        return math.atan(mu * gamma)
+    gap, gap_max = 1.0 - c, float(largest_stick_radius_gap(gamma))
+    if gap < 50.0 * gap_max:
+        return math.atan(1.3 * gap_max / (gap - gap_max))
+    ratio = correction_ratio(min(c, C_MAX))
+    return math.atan(gamma * gamma * float(mu_over_gamma(c)) * (1.0 + ratio * gamma**2))
 
 
 def _logit_guess(mu: float, gamma: float) -> float:
@@ -111,9 +119,36 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int) -> FlatP
     if gap <= float(largest_stick_radius_gap(gamma)):
         raise no_eigenvalue(c, gamma)
     res = RESOLUTIONS[level]
-    fine = SingularField(core_given_c(c, gap, gamma, _theta_guess(c, gamma), res))
+    try:
+        fine = SingularField(core_given_c(c, gap, gamma, _theta_guess(c, gamma), res))
+    except (SolverError, NoEigenvalueError):
+        fine = SingularField(core_given_c(c, gap, gamma, _theta_near_c_max(gap, gamma, res), res))
     coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
     return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.mu))
+
+
+def _theta_near_c_max(gap: float, gamma: float, res: Resolution, tol: float = 1e-6) -> float:
+    """theta for 1 - c = gap by the secant method in eps = cot(theta) = 1/(mu gamma) on the given-theta
+    solver: 1 - c is smooth in eps down to eps = 0 (c_max), where G(theta) at fixed c is not (poles of the
+    discrete system lie near pi/2). From eps = (gap - gap_max)/(1.3 gap_max), the approach; to tol relative."""
+    gap_max = float(largest_stick_radius_gap(gamma))
+    start = math.log1p(-gap) - math.log(gap)
+
+    def residual(eps: float) -> float:
+        field = solve_given_theta(math.atan2(1.0, eps), gamma, start, res)
+        return math.log(field.layout.gap) - math.log(gap)
+
+    e0 = max((gap - gap_max) / (1.3 * gap_max), 1e-12)
+    e1 = 1.1 * e0
+    r0, r1 = residual(e0), residual(e1)
+    for _ in range(30):
+        if r1 == r0:
+            break
+        e0, e1 = e1, max(e1 - r1 * (e1 - e0) / (r1 - r0), 0.5 * e1)
+        r0, r1 = r1, residual(e1)
+        if abs(e1 - e0) <= tol * e1:
+            break
+    return math.atan2(1.0, e1)
 
 
 def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_guess: float | None = None

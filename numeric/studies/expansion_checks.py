@@ -49,11 +49,13 @@ from asymptotics.first_order import (
     mu_over_gamma,
     shear_ratio_first_order,
 )
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from asymptotics.materials import gamma_from_nu, kappa_from_gamma
 from asymptotics.second_order import compliance_second_order, mu_over_gamma_second_order
 
 from numeric.core.table import table_compliance
 from numeric.solutions.flat_punch import flat_punch
+from numeric.solutions.slip_limit import slip_limit, stick_radius_approach
 from numeric.solutions.solution import FlatPunchSolution
 from numeric.solutions.sweep import friction_coefficient
 
@@ -86,8 +88,8 @@ _SMALL_MU_NUS = (0.49, 0.45, 0.3, 0.0, -0.5)
 _LARGE_MU_NUS = (0.49, 0.45, 0.4, 0.3)
 # 1 - c_max(gamma) measured once with flat_punch(gamma=..., mu=1000) at level 2 (1.7e-2,
 # 1.0e-3, 7.0e-5, 5.3e-6, 4.1e-7 for gamma = 2/3, 1/2, 0.4, 1/3, 2/7): only used to place the
-# grid of stick radii 1 - c = (1 - c_max) * _CMAX_FACTORS, which the c_max fit then re-measures.
-_CMAX_GUESS = ((2.0 / 3.0, 1.72e-2), (0.5, 1.0e-3), (0.4, 7.0e-5), (1.0 / 3.0, 5.25e-6), (2.0 / 7.0, 4.1e-7))
+# the largest stick radius: gammas of the limit problem, and 1 - c = (1 - c_max) * _CMAX_FACTORS for mu(c)
+_CMAX_GAMMAS = (0.75, 2.0 / 3.0, 0.5, 0.4, 1.0 / 3.0, 2.0 / 7.0)
 _CMAX_FACTORS = (2.0, 1.5, 1.2, 1.1, 1.05)
 
 
@@ -176,14 +178,16 @@ class LargestStickRow:
 
 @dataclass(frozen=True, slots=True)
 class LargestStickEstimate:
-    """c_max(gamma): where 1/mu(c), fitted by a quadratic through the three stick radii
-    closest to it, reaches 0. ``ratio`` = (1 - c_max) exp(pi/kappa), kappa = (2/pi) atanh gamma
-    (4.10): constant if 1 - c_max = ratio exp(-pi/kappa)."""
+    """c_max(gamma) from the limit problem mu -> inf (``numeric.slip_limit``) against the closed form
+    K'(c_max)/K(c_max) = kappa (``asymptotics.largest_stick_radius``); ``ratio`` = (1 - c_max) exp(pi/kappa)
+    (-> 8 as gamma -> 0); ``approach`` = A/(1 - c_max), (1 - c) - (1 - c_max) ~ A/(mu gamma)."""
 
     gamma: float
     kappa: float
     one_minus_c_max: float
+    closed_form_difference: float  # relative, in 1 - c_max
     ratio: float
+    approach: float
 
 
 @dataclass(frozen=True, slots=True)
@@ -367,20 +371,17 @@ def _largest_stick(fast: bool) -> tuple[tuple[LargestStickRow, ...], tuple[Large
     if fast:
         return (), ()
     rows, estimates = [], []
-    for g, guess in _CMAX_GUESS:
-        points = []
-        for factor in _CMAX_FACTORS:
-            s = flat_punch(gamma=g, c=1.0 - factor * guess, level=2)
-            points.append(LargestStickRow(g, factor * guess, s.mu, s.error))
-        rows.extend(points)
-        # 1/mu is a smooth function of c through 0 at c_max: quadratic through the last three
-        gap = np.array([p.one_minus_c for p in points[-3:]]) / guess
-        inverse = np.array([1.0 / p.mu for p in points[-3:]])
-        roots = np.roots(np.polyfit(gap, inverse, 2))
-        real = roots[np.isreal(roots)].real
-        root = float(real[np.argmin(np.abs(real - 1.0))]) * guess
+    for g in _CMAX_GAMMAS:
+        gap_max = float(largest_stick_radius_gap(g))
+        limit = slip_limit(gamma=g)
         kappa = float(kappa_from_gamma(g))
-        estimates.append(LargestStickEstimate(g, kappa, root, root * math.exp(math.pi / kappa)))
+        one_minus = 1.0 - limit.c
+        estimates.append(LargestStickEstimate(g, kappa, one_minus, one_minus / gap_max - 1.0,
+                                              one_minus * math.exp(math.pi / kappa),
+                                              stick_radius_approach(gamma=g) / one_minus))
+        for factor in _CMAX_FACTORS:
+            s = flat_punch(gamma=g, c=1.0 - factor * gap_max, level=2)
+            rows.append(LargestStickRow(g, factor * gap_max, s.mu, s.error))
     return (tuple(sorted(rows, key=lambda r: (r.gamma, -r.one_minus_c))),
             tuple(sorted(estimates, key=lambda r: r.gamma)))
 

@@ -76,10 +76,11 @@ def render_markdown(study: ExpansionStudy) -> str:
                 "| γ | 1 − c | μ | 1/μ | solver error of μ |", "|---|---|---|---|---|"]
         out += [f"| {r.gamma:.4f} | {r.one_minus_c:.3e} | {r.mu:.5g} | {1.0 / r.mu:.4g} | {_e(r.error)} |"
                 for r in study.largest_stick] + [""]
-        out += ["**c_max(γ) from 1/μ → 0 (quadratic through the three largest c)**", "",
-                "| γ | κ = (2/π) atanh γ | 1 − c_max | (1 − c_max) exp(π/κ) |", "|---|---|---|---|"]
-        out += [f"| {r.gamma:.4f} | {r.kappa:.6f} | {r.one_minus_c_max:.4e} | {r.ratio:.3f} |"
-                for r in study.largest_stick_estimates] + [""]
+        out += ["**c_max(γ) from the limit problem μ → ∞ (`numeric.slip_limit`) against K′(c_max)/K(c_max) = κ**", "",
+                "| γ | κ = (2/π) atanh γ | 1 − c_max (limit problem) | relative difference from the closed form | "
+                "(1 − c_max) exp(π/κ) | A/(1 − c_max) |", "|---|---|---|---|---|---|"]
+        out += [f"| {r.gamma:.4f} | {r.kappa:.6f} | {r.one_minus_c_max:.10e} | {_e(r.closed_form_difference)} | "
+                f"{r.ratio:.6f} | {r.approach:.5f} |" for r in study.largest_stick_estimates] + [""]
     else:
         out += ["(The largest stick radius c_max(γ) is studied in full mode only.)", ""]
     out += _error_and_order(study.stick_shear, "max_difference", "(2.31)",

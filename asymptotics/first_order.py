@@ -209,8 +209,9 @@ def _ratio(mu: ArrayLike, gamma: float) -> np.ndarray:
 
 
 def _small_mu_series(e: np.ndarray, terms: int) -> np.ndarray:
-    """c from E = gamma/mu by the small-mu expansion; 0 where E is infinite."""
-    finite = np.isfinite(e)
+    """c from E = gamma/mu by the small-mu expansion; 0 where E is infinite or c underflows (E > 800:
+    4 exp(-E) < 1e-347, while the correction polynomials would overflow)."""
+    finite = np.isfinite(e) & (e <= 800.0)
     ef = np.where(finite, e, 1.0)
     z = np.exp(-2.0 * ef)
     factor = np.ones_like(ef)

@@ -346,6 +346,11 @@ def correction_ratio(c: float) -> float:
     return float(f2_over_f0(min(c, C_MAX)))
 
 
+#: logit(c) below which c is taken as 0 (c = 1e-304: scipy's expit underflows to 0 near -709,
+#: and f0 needs c > 0)
+LOGIT_FLOOR = -700.0
+
+
 def _stick_radius_second_order_one(mu: float, gamma: float, c0: float) -> float:
     """The root c <= c0 of log(f0(c) (1 + R(c) gamma^2)) = log(mu/gamma), R = ``correction_ratio``:
     Brent in logit(c) below the first-order root c0 (the law increases in c); 0 where c underflows."""
@@ -356,13 +361,16 @@ def _stick_radius_second_order_one(mu: float, gamma: float, c0: float) -> float:
         return math.log(float(mu_over_gamma(c)) * (1.0 + correction_ratio(c) * gamma**2)) - target
 
     hi = float(special.logit(min(c0, 1.0 - 2.0**-52)))
+    if hi <= LOGIT_FLOOR:  # the root lies below the first-order one, which has underflowed already
+        return 0.0
     if h(hi) <= 0.0:  # c0 = 1 in doubles (mu/gamma > 12), or the law's root is within rounding of c0
         return c0
     lo, step = hi - 1.0, 1.0
-    while h(lo) > 0.0:
-        lo, step = lo - step, 2.0 * step
-        if lo < -740.0:  # c < 1e-321: underflows
+    while h(max(lo, LOGIT_FLOOR)) > 0.0:
+        if lo <= LOGIT_FLOOR:  # the root lies below c = 1e-304: c underflows
             return 0.0
+        lo, step = lo - step, 2.0 * step
+    lo = max(lo, LOGIT_FLOOR)
     return float(special.expit(optimize.brentq(h, lo, hi, xtol=1e-13, rtol=4.0 * np.finfo(float).eps)))
 
 

@@ -23,19 +23,18 @@ from typing import Protocol
 import numpy as np
 from numpy.typing import ArrayLike
 
-from asymptotics.first_order import mu_over_gamma_log_slope
 from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
 
-from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
+from numeric.core.table import table_available, table_errors, table_friction_coefficient, table_stick_radius
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
 from numeric.solutions.law import LawRoute
 from numeric.solutions.solution import first_meeting
 
-__all__ = ["Executor", "TABLE_MU_RTOL", "table_meets", "stick_radius", "friction_coefficient"]
+__all__ = ["Executor", "TABLE_MARGIN", "table_meets", "stick_radius", "friction_coefficient"]
 
-#: Relative error of mu from the Chebyshev table (numeric.core.table): MU_RELATIVE_ERROR = 5.2e-11, the
-#: worst of its build checks (at the corner c = 0.95, gamma = 2/3); about twice that.
-TABLE_MU_RTOL = 1e-10
+#: The table's relative error is taken as twice the worst its build measured at held-out points
+#: (``numeric.core.table_data.ERRORS``: mu, and c, directly, both ways through the interpolant).
+TABLE_MARGIN = 2.0
 
 
 class Executor(Protocol):
@@ -61,14 +60,10 @@ def _report(name: str, done: int, total: int, started: float) -> None:
 
 
 def table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
-    """Where the table's value meets rtol: mu to TABLE_MU_RTOL; c to TABLE_MU_RTOL over d log mu/d log c,
-    which is at least the first-order slope d log f0/d log c (f2/f0 and f4/f0 increase with c, measured)."""
-    ok = ~np.isnan(values)
-    if kind == "mu":
-        return ok & (TABLE_MU_RTOL <= rtol)
-    slope = np.ones(values.shape)
-    slope[ok] = mu_over_gamma_log_slope(values[ok])
-    return ok & (TABLE_MU_RTOL / slope <= rtol)
+    """Where the table's value meets rtol: its recorded error of mu or c (``table_errors``) times TABLE_MARGIN."""
+    errors = table_errors()
+    bound = TABLE_MARGIN * max(errors.get(kind, math.inf), errors.get("gap", 0.0) if kind == "c" else 0.0)
+    return ~np.isnan(values) & (bound <= rtol)
 
 
 def _sweep(name: str, kind: str, table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool, level: int | None,
@@ -113,16 +108,16 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level:
                  progress: bool = False) -> np.ndarray | float:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
 
-    Inside the table's domain (``numeric.core.table``: 1e-3 <= c <= 0.95, nu >= -1/2) c
-    comes from the Chebyshev table of the eigenvalue relation (microseconds a point, error
-    ``numeric.core.table_data.MU_RELATIVE_ERROR`` in mu); elsewhere, or with
+    Inside the table's domain (``numeric.core.table``: c >= 1e-5 up to the largest stick radius, every
+    nu in (-1, 1/2]; for nu > 0.34 up to 1 - c = 1e-10) c comes from the Chebyshev tables (a few
+    microseconds a point, errors ``numeric.core.table_data.ERRORS``); elsewhere, or with
     ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
     ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
     with a progress line on stderr when ``progress`` is true.
 
     With ``rtol`` (not together with ``level``) the cheapest route meeting it for each point:
-    the asymptotic law (see ``flat_punch``), else the table where its error (``TABLE_MU_RTOL``
-    in mu, over d log mu/d log c in c) meets rtol, else ``flat_punch(rtol=rtol)``. An
+    the asymptotic law (see ``flat_punch``), else the table where its recorded error (times
+    ``TABLE_MARGIN``) meets rtol, else ``flat_punch(rtol=rtol)``. An
     ``AccuracyWarning`` from points solved through ``executor`` is raised in the workers.
 
     Examples

@@ -35,10 +35,12 @@ from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
+from numeric.core.table import table_given_mu, table_least_mu
 from numeric.solutions.law import LawRoute
 from numeric.solutions.limits import closed_form_given_c, closed_form_given_mu
-from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_MAX, SolverRoute
-from numeric.solutions.solution import FlatPunchSolution, first_meeting
+from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_MAX, NEAR_C_MAX, SolverRoute
+from numeric.solutions.solution import FlatPunchSolution, Offer, first_meeting
+from numeric.solutions.table_route import TABLE_RTOL, TableRoute
 
 __all__ = ["flat_punch", "check_rtol", "level_and_rtol"]
 
@@ -114,7 +116,10 @@ def flat_punch(
     Raises
     ------
     NoEigenvalueError
-        If c is at or above the largest stick radius c_max(gamma) (``numeric.largest_stick_radius``).
+        If c is above the largest stick radius c_max(gamma) (``numeric.largest_stick_radius``) by more than
+        rounding. Within rounding of c_max (4 units in the last place of c, or twice the distance of the
+        level's c_max from the closed form) the result is the slip limit (``numeric.slip_limit``: mu = inf,
+        c = c_max, ``route`` says so); just below, mu is finite with the shift of the level's c_max in ``error``.
     SolverError
         If the iteration does not converge. Below c = 1e-5 (``C_ASYMPTOTIC``; given mu: where the
         asymptotic law puts c there) the asymptotic route (second order) is taken.
@@ -145,12 +150,18 @@ def flat_punch(
 
 
 def _given_c(nu: float | None, gamma: float, c: float, level: int, rtol: float | None) -> FlatPunchSolution:
+    if 0.0 < gamma and c < 1.0 and 1.0 - c <= float(largest_stick_radius_gap(gamma)) * (1.0 + NEAR_C_MAX):
+        # at c_max to rounding (the slip limit) or beyond it (NoEigenvalueError): the solver tells which
+        solver = SolverRoute(nu, gamma, c, None, c)
+        return solver.at_level(level) if rtol is None else (first_meeting(solver.offers(rtol), rtol, lambda s: s.mu)
+                                                             or solver.best_effort(rtol))
     closed = closed_form_given_c(nu, gamma, c)
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, c, None)
     solver = SolverRoute(nu, gamma, c, None, c)
-    return _cheapest(law, solver, level, rtol, lambda sol: sol.mu, f"c < {C_ASYMPTOTIC:g}")
+    return _cheapest(law, _table(nu, gamma, c, None, rtol), solver, level, rtol, lambda sol: sol.mu,
+                     f"c < {C_ASYMPTOTIC:g}")
 
 
 def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float | None) -> FlatPunchSolution:
@@ -163,9 +174,18 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
         solver = SolverRoute(nu, gamma, None, mu, 1.0, gap_max)
         return solver.at_level(level) if rtol is None else (first_meeting(solver.offers(rtol), rtol, lambda s: s.c)
                                                              or solver.best_effort(rtol))
-    solver = SolverRoute(nu, gamma, None, mu, law.bracket.c, max(law.gap, gap_max))
+    # where the table reaches, its c and 1 - c (~1e-9) decide the route: the law's 1 - c misses the
+    # saturation at c_max (at gamma = 0.13, mu = 2 it puts 1 - c at 1e-21, the table at 6.5e-12)
+    found = table_given_mu(mu, gamma)
+    if math.isfinite(found.gap[0]):
+        solver = SolverRoute(nu, gamma, None, mu, float(found.c[0]), float(found.gap[0]))
+    elif mu < table_least_mu(gamma):  # c < C_MIN: below the solver's reach, whatever the law's estimate
+        solver = SolverRoute(nu, gamma, None, mu, 0.0)
+    else:
+        solver = SolverRoute(nu, gamma, None, mu, law.bracket.c, max(law.gap, gap_max))
     try:
-        return _cheapest(law, solver, level, rtol, lambda sol: sol.c, f"the law's c < {C_ASYMPTOTIC:g}")
+        return _cheapest(law, _table(nu, gamma, None, mu, rtol), solver, level, rtol, lambda sol: sol.c,
+                         f"the law's c < {C_ASYMPTOTIC:g}")
     except SolverError:
         if law.bracket.lo >= C_ASYMPTOTIC:
             raise
@@ -173,14 +193,21 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
         return law.last_resort(rtol, "the solver did not converge at this small c")
 
 
-def _cheapest(law: LawRoute, solver: SolverRoute, level: int, rtol: float | None,
+def _table(nu: float | None, gamma: float, c: float | None, mu: float | None, rtol: float | None) -> list[Offer]:
+    """The table route's offers (none unless rtol >= TABLE_RTOL: the table is not consulted otherwise)."""
+    if rtol is None or rtol < TABLE_RTOL:
+        return []
+    return TableRoute(nu, gamma, c, mu).offers(rtol)
+
+
+def _cheapest(law: LawRoute, table: list[Offer], solver: SolverRoute, level: int, rtol: float | None,
               value: Callable[[FlatPunchSolution], float], below: str) -> FlatPunchSolution:
-    """Ask the law and the solver once what they offer for rtol; run the offers cheapest first and
+    """Ask the law, the table and the solver once what they offer for rtol; run the offers cheapest first and
     return the first result that meets rtol in ``value``; else the solver's best (or, below its
     reach, the second-order law), with an ``AccuracyWarning``. Without rtol the solver runs at
     ``level``."""
     if rtol is not None:
-        sol = first_meeting(law.offers(rtol) + (solver.offers(rtol) if solver.reaches else []), rtol, value)
+        sol = first_meeting(law.offers(rtol) + table + (solver.offers(rtol) if solver.reaches else []), rtol, value)
         if sol is not None:
             return sol
     if not solver.reaches:

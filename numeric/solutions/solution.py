@@ -84,6 +84,11 @@ class FlatPunchSolution:
     breakpoints: np.ndarray
     _field: StressField
 
+    @property
+    def gap(self) -> float:
+        """1 - c, without the cancellation of forming it from c (near c_max it is 1e-3 ... 1e-12)."""
+        return float(getattr(self._field, "gap", 1.0 - self.c))
+
     def pressure(self, x: ArrayLike) -> np.ndarray | float:
         """Contact pressure p(x), [S75] (2.1)."""
         return self._at(x, self._field.pressure, edge=self._field.edge_value(shear=False))

@@ -3,7 +3,9 @@
 Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is the
 difference between the level and the same problem one polynomial degree lower
 (``numeric.core.charts.partner``), at least ``ERROR_FLOOR`` times the value (the rounding
-level of the eigenvalue condition). Measured against level 4 (``tests/test_singular_solver.py``,
+level of the eigenvalue condition), a floor that grows like 1/c below c = 2e-3 (``SMALL_C_ROUNDING``,
+measured) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the level's
+c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against level 4 (``tests/test_singular_solver.py``,
 ``derivations/benchmark.md``) the true error lies below this estimate and within a factor 10
 of it.
 
@@ -27,6 +29,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 from scipy.special import logit
@@ -41,14 +44,16 @@ from numeric.core.eigenvalue import solve_given_c as core_given_c
 from numeric.core.eigenvalue import solve_given_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.fields import SingularField
-from numeric.core.table import table_available, table_friction_coefficient, table_stick_radius
-from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, no_eigenvalue
+from numeric.core.table import table_available, table_friction_coefficient, table_given_mu
+from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, closed_form, no_eigenvalue
 from numeric.solutions.solution import FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
-           "SolverRoute", "solve_given_c", "solve_given_mu", "from_field"]
+           "NEAR_C_MAX", "ROUNDING_ULPS", "SMALL_C_ROUNDING", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
+           "nearly_adhesive"]
 
 DEFAULT_LEVEL = 2
+HALF_PI = 0.5 * math.pi
 #: Below this stick radius the asymptotic law replaces the solver (the layout needs ~40 elements at 1e-5).
 C_ASYMPTOTIC = 1e-5
 #: Given mu, below this 1 - c the answer is the adhesive solution with the law's c (see the module docstring).
@@ -58,6 +63,19 @@ LAW_MU_GAMMA_MAX = 1e6
 #: Relative floor of the error estimate: below it two levels agree only to rounding and to the Abel
 #: rules' 1e-13 (measured: levels 3 and 4 differ by up to 6e-13 relative where both converged).
 ERROR_FLOOR = 2e-13
+#: Given c with (1 - c) - (1 - c_max) below this fraction of 1 - c_max (or ROUNDING_ULPS units in the last place
+#: of c), the level's own c_max (the limit problem, fine and partner) is solved first to tell c from c_max.
+NEAR_C_MAX = 1e-6
+#: c within this many units in the last place of c_max (or within twice the distance of the level's c_max from
+#: the closed form, if larger) is c_max to rounding: the answer is the slip limit, mu = inf.
+ROUNDING_ULPS = 4.0
+#: Below this stick radius the rounding floor grows like SMALL_C_ROUNDING / c. Measured: the largest difference in
+#: mu between levels 2, 3 and 4 (each level's round-off, not discretisation: they scatter without converging;
+#: mpmath on the level-0 system at nu = 0.3, c = 1e-4 puts the double root 8e-12 relative off) over
+#: nu in {-0.5, 0, 0.3, 0.45} is 1.6e-11, 1.3e-11, 3.7e-12, 4.8e-13, 2.0e-13, 8e-14 at c = 1e-5, 3e-5, 1e-4,
+#: 3e-4, 1e-3, 3e-3 (P* ~ 1 is the scale there); the floor 2e-13 max(1, 2e-3/c) is 4e-11, 1.3e-11, 4e-12,
+#: 1.3e-12, 4e-13, 2e-13: above each, and within 3x of the largest below c = 1e-4.
+SMALL_C_ROUNDING = 2e-3
 #: Typical relative accuracy of each level (the worst measured, ``RESOLUTIONS``); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {0: 1e-8, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}
 #: Rough run time in seconds of a solve with its error estimate (derivations/benchmark.md), for ordering routes.
@@ -94,10 +112,18 @@ def _theta_guess(c: float, gamma: float) -> float:
     return math.atan(gamma * gamma * float(mu_over_gamma(c)) * (1.0 + ratio * gamma**2))
 
 
-def _logit_guess(mu: float, gamma: float) -> float:
-    """logit(c) from the table, else the second-order law, kept below the largest stick radius."""
-    c = float(np.ravel(table_stick_radius(np.array([mu]), np.array([gamma])))[0]) if table_available() else math.nan
-    if not 0.0 < c < 1.0 and mu * gamma < LAW_MU_GAMMA_MAX:
+#: First secant step in logit(c) from a guess of the table (good to ~1e-10) and from the law's
+TABLE_STEP, LAW_STEP = 1e-6, 1e-3
+
+
+def _logit_guess(mu: float, gamma: float) -> tuple[float, float]:
+    """logit(c) from the table, else the second-order law, kept below the largest stick radius; and the
+    first secant step that suits the guess."""
+    found = table_given_mu(mu, gamma)  # nan outside the table (or without it)
+    c, gap = float(found.c[0]), float(found.gap[0])
+    if 0.0 < c < 1.0:
+        return math.log(c) - math.log(gap), TABLE_STEP
+    if mu * gamma < LAW_MU_GAMMA_MAX:
         c = float(stick_radius_second_order(mu, gamma=gamma))
     if not 0.0 < c < 1.0:
         c = 1.0
@@ -105,26 +131,87 @@ def _logit_guess(mu: float, gamma: float) -> float:
     gap = max(1.0 - c, 1.5 * gap_max, 1e-300)
     if c <= 0.0:
         c = C_ASYMPTOTIC
-    return math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)
+    return (math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)), LAW_STEP
+
+
+def rounding_floor(c: float, scale: float) -> float:
+    """The rounding level of the eigenvalue condition: ERROR_FLOOR * scale, times SMALL_C_ROUNDING / c below
+    c = SMALL_C_ROUNDING (the round-off of the solve grows like 1/c there)."""
+    return ERROR_FLOOR * scale * max(1.0, SMALL_C_ROUNDING / c)
 
 
 def _error(fine: SingularField, coarse: SingularField, value: Callable[[SingularField], float]) -> float:
     scale = max(abs(value(fine)), abs(fine.compliance))
-    return max(abs(value(fine) - value(coarse)), abs(fine.compliance - coarse.compliance), ERROR_FLOOR * scale)
+    return max(abs(value(fine) - value(coarse)), abs(fine.compliance - coarse.compliance),
+               rounding_floor(fine.c, scale))
 
 
-def solve_given_c(nu: float | None, c: float, gamma: float, level: int) -> FlatPunchSolution:
-    """mu for stick radius c at ``level``; the partner resolution gives the error estimate."""
-    gap = 1.0 - c
-    if gap <= float(largest_stick_radius_gap(gamma)):
-        raise no_eigenvalue(c, gamma)
+def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: float | None = None,
+                  theta_guess: float | None = None) -> FlatPunchSolution:
+    """mu for stick radius c at ``level``; the partner resolution gives the error estimate. ``gap``: 1 - c
+    exactly, where c near 1 has rounded it (the tables' nodes); ``theta_guess``: atan(mu gamma) from a
+    neighbouring solution (else the table's, or the law's)."""
+    given_gap = gap
+    rounding = ROUNDING_ULPS * (math.ulp(c) if gap is None else math.ulp(gap))
+    gap = 1.0 - c if gap is None else gap
+    gap_max = float(largest_stick_radius_gap(gamma))
+    excess = gap - gap_max  # (1 - c) - (1 - c_max); mu gamma ~ A / excess, A ~ 1.2 ... 1.5 (1 - c_max)
+    bias = 0.0
+    if excess <= max(NEAR_C_MAX * gap_max, 2.0 * rounding):
+        # Near c_max the friction is A/(gamma excess): a shift of the level's c_max (measured against the closed
+        # form at level 2: 1.8e-13 at nu = -0.999, 9e-16 at nu = -0.9, 1.5e-16 at nu = 0) moves mu by
+        # mu shift/excess, and c within rounding of c_max has no finite mu to tell.
+        limit, partner_gap = solve_limit(nu, gamma, level)
+        # and one unit in the last place of 1 - c for the rounding of the eigenvalue condition (measured: the
+        # level-4 mu at nu = -0.999, 6 ulp below c_max, is 5% off the approach A/(gamma excess))
+        bias = max(abs(limit.gap - gap_max), abs(partner_gap - gap_max)) + rounding / ROUNDING_ULPS
+        resolution = max(rounding, 2.0 * bias)
+        if excess < -resolution:
+            raise no_eigenvalue(c, gamma)
+        if rounding < abs(excess) <= resolution and level < len(RESOLUTIONS) - 1:  # a finer level's c_max may tell
+            return solve_given_c(nu, c, gamma, level + 1, given_gap, theta_guess)
+        if excess <= resolution:
+            return replace(limit, route=f"c = {c!r} is c_max to rounding (|(1 - c) - (1 - c_max)| = {abs(excess):.2g} "
+                                        f"<= {resolution:.2g}): {limit.route}")
     res = RESOLUTIONS[level]
+    guess = _theta_guess(c, gamma) if theta_guess is None else theta_guess
     try:
-        fine = SingularField(core_given_c(c, gap, gamma, _theta_guess(c, gamma), res))
+        fine = SingularField(core_given_c(c, gap, gamma, guess, res))
     except (SolverError, NoEigenvalueError):
         fine = SingularField(core_given_c(c, gap, gamma, _theta_near_c_max(gap, gamma, res), res))
     coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
-    return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.mu))
+    error = _error(fine, coarse, lambda f: f.mu)
+    if bias > 0.0:  # the level's c_max off the closed form by bias: mu off by up to mu bias / (excess - bias)
+        error = max(error, fine.mu * bias / (excess - bias))
+    return from_field(nu, fine, level, error)
+
+
+def solve_limit(nu: float | None, gamma: float, level: int) -> tuple[FlatPunchSolution, float]:
+    """The limit mu -> inf (theta = pi/2: c = c_max, no pressure on the slip annulus) at ``level``, and the
+    partner resolution's 1 - c_max.
+
+    ``error`` is the difference from the partner (c, P*), at least ERROR_FLOOR P*. Where 1 - c_max is below
+    GAP_ADHESIVE (nu above ~0.41, gamma below ~0.15) the annulus is thinner than the stresses resolve (and a
+    layout down to it would need ~1e4 elements at nu = 0.4999, where 1 - c_max underflows: 1.3 GiB): the
+    adhesive solution (App. B) with c = 1 - (1 - c_max) of the closed form, as ``nearly_adhesive``; at
+    gamma = 0 the closed form c = 1.
+    """
+    if gamma == 0.0:
+        sol = closed_form(nu, gamma, math.inf, 1.0, True, "limit mu -> inf at gamma = 0: no coupling, c = 1")
+        return sol, 0.0
+    gap_max = float(largest_stick_radius_gap(gamma))
+    if gap_max < GAP_ADHESIVE:
+        near = nearly_adhesive(nu, gamma, math.inf, gap_max)
+        route = (f"limit mu -> inf: adhesive stresses (App. B), 1 - c_max = {gap_max:.3g} < {GAP_ADHESIVE:g} "
+                 "(closed form) is below what the stresses resolve")
+        return replace(near, route=route), gap_max
+    res = RESOLUTIONS[level]
+    start = math.log1p(-gap_max) - math.log(gap_max)
+    fine = SingularField(solve_given_theta(HALF_PI, gamma, start, res))
+    coarse = SingularField(solve_given_theta(HALF_PI, gamma, math.log(fine.c) - math.log(fine.gap), partner(res)))
+    error = max(abs(fine.gap - coarse.gap), abs(fine.compliance - coarse.compliance), ERROR_FLOOR * fine.compliance)
+    sol = from_field(nu, fine, level, error, math.inf)
+    return replace(sol, route=f"limit mu -> inf (annulus without pressure), {sol.route}"), coarse.gap
 
 
 def _theta_near_c_max(gap: float, gamma: float, res: Resolution, tol: float = 1e-6) -> float:
@@ -155,15 +242,18 @@ def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_gues
                    ) -> FlatPunchSolution:
     """The stick radius for friction mu at ``level`` (secant in logit c at theta = atan(mu gamma))."""
     theta = math.atan(mu * gamma)
-    start = _logit_guess(mu, gamma) if c_guess is None else float(logit(c_guess))
+    start, step = _logit_guess(mu, gamma) if c_guess is None else (float(logit(c_guess)), LAW_STEP)
     res: Resolution = RESOLUTIONS[level]
-    fine = SingularField(solve_given_theta(theta, gamma, start, res))
-    coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap), partner(res)))
+    fine = SingularField(solve_given_theta(theta, gamma, start, res, step=step))
+    # the partner's c differs from the fine one's by the discretisation error (< 1e-6)
+    coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap),
+                                             partner(res), step=TABLE_STEP))
     return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.c), mu)
 
 
 def nearly_adhesive(nu: float | None, gamma: float, mu: float, gap: float) -> FlatPunchSolution:
-    """mu so large for this gamma that 1 - c < GAP_ADHESIVE: the adhesive solution with c = 1 - gap."""
+    """mu so large for this gamma that 1 - c < GAP_ADHESIVE: the adhesive solution with c = 1 - gap (its P* and
+    stresses at 1 - x > 1e-12 within 0.3 gap^0.87 of the frictional ones, measured)."""
     adhesive = float(compliance_adhesive(gamma))
     return FlatPunchSolution(
         nu=nu, gamma=gamma, mu=mu, c=1.0 - gap, compliance=adhesive,

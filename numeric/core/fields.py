@@ -19,8 +19,8 @@ from functools import cached_property
 
 import numpy as np
 
-from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, Layout, basis_values, chart_of_offset,
-                     collocation_chart)
+from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, basis_values,
+                                 chart_of_offset, collocation_chart)
 from numeric.core.eigenvalue import Eigensolution
 from numeric.core.operators import AbelOperators, normal_factor
 
@@ -47,6 +47,7 @@ class SingularField:
         self.theta = solution.theta
         self.alpha = sys.alpha
         self.c = self.layout.c
+        self.gap = self.layout.gap  # 1 - c, formed without cancellation
         self.n_unknowns = solution.coefficients.size
         ns = sys.n_stick
         z = solution.coefficients
@@ -96,10 +97,38 @@ class SingularField:
             if not np.any(inside):
                 continue
             s = chart_of_offset(lay, e, off_e[inside])
+            if lay.kind[e] == SLIP_END or lay.kind[e] == STICK_END:
+                s = self._off_the_layer(e, s)
             coef = coefficients[lay.starts[e] - base: lay.starts[e + 1] - base]
             out[inside] = basis_values(lay, e, s, self.alpha) @ coef
             done |= inside
         return out
+
+    def _off_the_layer(self, e: int, s: np.ndarray) -> np.ndarray:
+        """Chart points s of an element at c, with s = 0 (x = c itself) moved to the nearest double x on the
+        element's side when the layer of s^beta at c is thinner than that distance.
+
+        Near c the fields are A(s) + s^beta B(s) (``numeric.core.charts``), in the basis a + b h_beta(s): at
+        s = 0 exactly, h_beta = -1/beta, while at the nearest double x != c (s_near ~ 1e-8 ... 1e-4) it is
+        still ~log s_near as long as s_near^beta is near 1. For such beta (mu gamma above ~20 at the largest
+        s_near) s^beta falls from ~1 to 0 in a layer narrower than one unit in the last place of c: the value
+        at c is a spike of height ~b/beta that no other double sees (q(c) = mu p(c), 1e300 at mu = 1e300;
+        -inf - inf = nan at beta = 0), computed with the rounding of b amplified by 1/beta. A quadrature node
+        that rounds onto c stands for its neighbourhood, not for the spike (it made the power-law constants
+        drift like 1e-16 mu gamma, ``numeric.solutions.power_law``), so there the value at the nearest double
+        is returned: the one-sided limit over the doubles. Where the layer is resolved (s_near^beta < 1/2)
+        the value at c is kept.
+        """
+        at_c = s == 0.0
+        if not np.any(at_c):
+            return s
+        lay = self.layout
+        beta = 1.0 - 2.0 * self.alpha
+        near = np.nextafter(lay.c, 2.0 if lay.kind[e] == SLIP_END else 0.0)
+        s_near = float(chart_of_offset(lay, e, np.array((near - lay.c) * (near + lay.c))))
+        if not (s_near > 0.0 and beta * math.log(s_near) >= -math.log(2.0)):
+            return s
+        return np.where(at_c, s_near, s)
 
     def pressure(self, x: np.ndarray) -> np.ndarray:
         """p(x), 0 <= x < 1 (infinite at x = 1 for 0 <= mu < inf)."""

@@ -46,9 +46,14 @@ Two details matter near the edge x = 1, where p0, q0 ~ (1 - x)^(alpha - 1/2):
   (``EDGE_GAP``; the last breakpoint that far from 1, graded further by factors of 4 if
   needed). On (x_e, 1) the local edge form is fitted to the samples at s_e and 4 s_e and
   integrated exactly: K s^(alpha - 1/2), tan(pi alpha) = mu gamma, in the slip annulus, or
-  s^(-1/2) Re[K s^(i kappa/2)] (log-periodic) when fully adhesive (mu = inf)
+  s^(-1/2) Re[K s^(i kappa/2)] (log-periodic) when the edge sticks (1 - c < s_e: c = 1, mu = inf;
+  not the slip limit mu = inf, c = c_max, whose annulus keeps alpha = 1/2)
   (reformulation.md, structure of the solution). The neglected next order is O(s_e)
   absolutely, about 1e-13.
+* Near x = c, for large mu gamma, the fields carry a layer of s^beta (beta = 1 - 2 alpha)
+  narrower than one unit in the last place of c; the flat solution returns at a node that rounds
+  onto c the value at the nearest double (``numeric.core.fields``), not the spike q(c) = mu p(c)
+  of that layer, which made A and C drift like 1e-16 mu gamma (nan at mu gamma > 1e16).
 
 References
 ----------
@@ -128,10 +133,12 @@ class _EdgeModel:
     s_ref: float
 
     @classmethod
-    def fit(cls, values: np.ndarray, s_e: float, mu: float, gamma: float) -> _EdgeModel:
+    def fit(cls, values: np.ndarray, s_e: float, mu: float, gamma: float, adhesive: bool) -> _EdgeModel:
         """The local form fitted to f at s = s_e and 4 s_e: K s^(alpha - 1/2), tan(pi alpha) = mu gamma,
-        or s^(-1/2) Re[K s^(i kappa/2)] when fully adhesive (mu = inf)."""
-        if math.isinf(mu):  # adhesive edge: s^(-1/2) Re[K s^(i kappa/2)]
+        or s^(-1/2) Re[K s^(i kappa/2)] when the edge sticks (``adhesive``: no slip annulus outside 1 - s_e;
+        mu = inf and c = 1, or the adhesive stresses of ``numeric.solutions.solver.nearly_adhesive``). The
+        slip limit (mu = inf, c = c_max < 1, ``numeric.slip_limit``) keeps its annulus: alpha = 1/2."""
+        if adhesive:  # adhesive edge: s^(-1/2) Re[K s^(i kappa/2)]
             omega = math.atanh(gamma) / math.pi  # kappa/2
             g1, g2 = values * np.sqrt(np.array([s_e, 4.0 * s_e]))
             ell = math.log(4.0)
@@ -199,8 +206,11 @@ class _Flat:
         self.s_e = 1.0 - self.x_e
         self.p_centre = float(np.asarray(flat.pressure(np.zeros(1)), dtype=float).ravel()[0])
         probe = np.array([self.x_e, 1.0 - 4.0 * self.s_e])
-        self.edge_p = _EdgeModel.fit(np.asarray(flat.pressure(probe), dtype=float), self.s_e, self.mu, self.gamma)
-        self.edge_q = _EdgeModel.fit(np.asarray(flat.shear(probe), dtype=float), self.s_e, self.mu, self.gamma)
+        adhesive = 1.0 - self.c < self.s_e  # the stick zone reaches into the edge piece (mu = inf is not enough)
+        self.edge_p = _EdgeModel.fit(np.asarray(flat.pressure(probe), dtype=float), self.s_e, self.mu, self.gamma,
+                                     adhesive)
+        self.edge_q = _EdgeModel.fit(np.asarray(flat.shear(probe), dtype=float), self.s_e, self.mu, self.gamma,
+                                     adhesive)
 
     def rule_knots(self, *, grade_zero: bool = False, extra: tuple[float, ...] = (),
                    n: float = 1.0) -> np.ndarray:

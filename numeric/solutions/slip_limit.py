@@ -34,11 +34,11 @@ from asymptotics.arrays import scalar_or_array
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from asymptotics.materials import check_gamma, check_nu, gamma_from_nu, resolve_gamma
 
-from numeric.core.charts import RESOLUTIONS, partner
+from numeric.core.charts import RESOLUTIONS
 from numeric.core.eigenvalue import solve_given_theta
 from numeric.core.fields import SingularField
 from numeric.solutions.solution import FlatPunchSolution
-from numeric.solutions.solver import DEFAULT_LEVEL, ERROR_FLOOR, from_field
+from numeric.solutions.solver import DEFAULT_LEVEL, GAP_ADHESIVE, solve_limit
 
 __all__ = ["largest_stick_radius", "slip_limit", "stick_radius_approach"]
 
@@ -64,7 +64,7 @@ def largest_stick_radius(nu: ArrayLike = None, *, gamma: ArrayLike = None) -> np
 
 
 def _limit(gamma: float, level: int, theta: float = HALF_PI) -> SingularField:
-    gap = max(float(largest_stick_radius_gap(gamma)), 1e-300)
+    gap = float(largest_stick_radius_gap(gamma))
     start = math.log1p(-gap) - math.log(gap)
     return SingularField(solve_given_theta(theta, gamma, start, RESOLUTIONS[level]))
 
@@ -74,24 +74,31 @@ def slip_limit(nu: float | None = None, *, gamma: float | None = None, level: in
 
     The limit problem (theta = pi/2) at ``level``; ``error`` is the difference from one degree lower.
     ``mu`` is inf and ``route`` says "limit mu -> inf". Not the adhesive solution (see the module).
+    Where 1 - c_max < 1e-13 (``GAP_ADHESIVE``; nu above ~0.41) the annulus is below what the stresses
+    resolve and the result is the adhesive solution with c = 1 - (1 - c_max) (closed form), its error
+    max(1 - c_max, 0.3 (1 - c_max)^0.87) (``numeric.solutions.solver.nearly_adhesive``); at gamma = 0
+    (nu = 1/2) it is the closed form c = 1 (no coupling).
     """
     g = resolve_gamma(nu, gamma)
-    if not g > 0.0:
-        raise ValueError(f"gamma must be positive for a slip annulus to remain, got {g!r}")
-    fine = _limit(g, level)
-    coarse = SingularField(solve_given_theta(HALF_PI, g, math.log(fine.c) - math.log(fine.layout.gap),
-                                             partner(RESOLUTIONS[level])))
-    error = max(abs(fine.c - coarse.c), abs(fine.compliance - coarse.compliance), ERROR_FLOOR * fine.compliance)
-    sol = from_field(None if nu is None else float(check_nu(nu)), fine, level, error, math.inf)
-    return FlatPunchSolution(sol.nu, sol.gamma, math.inf, sol.c, sol.compliance, sol.error,
-                             f"limit mu -> inf (annulus without pressure), {sol.route}", sol.breakpoints, fine)
+    return solve_limit(None if nu is None else float(check_nu(nu)), g, level)[0]
 
 
 def stick_radius_approach(nu: float | None = None, *, gamma: float | None = None, level: int = DEFAULT_LEVEL) -> float:
     """A in (1 - c) - (1 - c_max) = A/(mu gamma) + O(mu^-2) as mu -> inf, from the limit problem.
 
     (-3 g(0) + 4 g(h) - g(2h)) / (2h) with g the 1 - c at 1/(mu gamma) = 0, h, 2h (h = APPROACH_STEP).
+
+    Raises
+    ------
+    ValueError
+        Where 1 - c_max < 1e-13 (``GAP_ADHESIVE``: nu above ~0.41, gamma below ~0.15): the annulus, and A
+        (~1.2 ... 1.5 (1 - c_max)), are below what the solver resolves, and at nu = 1/2 there is none.
     """
     g = resolve_gamma(nu, gamma)
+    gap_max = float(largest_stick_radius_gap(g))
+    if not gap_max >= GAP_ADHESIVE:
+        raise ValueError(f"stick_radius_approach: at gamma = {g:.6g} (nu = {nu}) the slip annulus of the limit, "
+                         f"1 - c_max = {gap_max:.3g}, is thinner than {GAP_ADHESIVE:g}, below what the solver "
+                         "resolves (A ~ 1.2 ... 1.5 (1 - c_max) would be as small)")
     gaps = [_limit(g, level, math.atan2(1.0, k * APPROACH_STEP)).layout.gap for k in (0, 1, 2)]
     return (-3.0 * gaps[0] + 4.0 * gaps[1] - gaps[2]) / (2.0 * APPROACH_STEP)

@@ -1,0 +1,133 @@
+"""The extremes of the stability study: mu gamma up to 1e300, c at c_max to rounding, tiny gamma, small c.
+
+Independent references: the slip limit (theta = pi/2 exactly, no mu in the problem) with the approach
+A/(mu gamma) for c; the closed form of 1 - c_max (``asymptotics.largest_stick_radius``); the adhesive
+closed form (App. B); solves at level 4 for the error estimate at small c.
+"""
+
+import math
+import resource
+
+import numpy as np
+import pytest
+
+from asymptotics.adhesive import compliance_adhesive
+from asymptotics.largest_stick_radius import largest_stick_radius_gap
+from asymptotics.materials import gamma_from_nu
+from numeric import (NoEigenvalueError, flat_punch, largest_stick_radius, power_law, slip_limit,
+                     stick_radius_approach)
+from numeric.core.charts import RESOLUTIONS
+from numeric.core.eigenvalue import solve_given_theta
+from numeric.core.fields import SingularField
+from numeric.solutions.power_law import displacement_constant, indentation_constant
+from numeric.solutions.solver import GAP_ADHESIVE, solve_given_c
+
+
+# ---------------------------------------------------------------- 1. large mu gamma
+@pytest.mark.parametrize("nu", [-0.5, 0.0, 0.3])
+def test_power_law_constants_settle_to_the_slip_limit(nu):
+    # A, C at mu gamma = 1e8 ... 1e300 against the slip limit's (theta = pi/2 exactly: no mu gamma to round)
+    # plus the slope in eps = 1/(mu gamma) from mu gamma = 1e4 (O(eps^2) at 1e8 and above: < 1e-15). Before the
+    # fix A drifted like 1e-16 mu gamma (1e-5 at 1e10, nan at 1e16); measured after: |A - ref|, |C - ref| below
+    # 2e-13 at nu = -0.5, 0 and 1e-13 at 0.3, so 1e-11 (the solver's accuracy, level 2) is the bound.
+    g = float(gamma_from_nu(nu))
+    limit = slip_limit(nu)
+    a_lim, c_lim = indentation_constant(limit, 2), displacement_constant(limit, 2)
+    near = power_law(2, nu=nu, mu=1e4 / g)
+    slope_a, slope_c = (near.A - a_lim) * 1e4, (near.C - c_lim) * 1e4
+    slope_p = (near.flat.compliance - limit.compliance) * 1e4
+    for mu_gamma in (1e8, 1e16, 1e300):
+        s = power_law(2, nu=nu, mu=mu_gamma / g)
+        eps = 1.0 / mu_gamma
+        assert abs(s.A - (a_lim + slope_a * eps)) < 1e-11
+        assert abs(s.C - (c_lim + slope_c * eps)) < 1e-11
+        # c against the closed form c_max and the approach A/(mu gamma); P* against the limit's
+        approach = stick_radius_approach(nu) * eps
+        assert abs(s.flat.gap - (float(largest_stick_radius_gap(g)) + approach)) < 1e-11 * max(s.flat.gap, 1e-3)
+        assert abs(s.flat.compliance - (limit.compliance + slope_p * eps)) <= max(s.error, limit.error)
+        assert s.error < 1e-10
+
+
+def test_fields_at_the_stick_slip_boundary_are_finite_for_huge_mu():
+    # at mu gamma >= 1e16 theta rounds to pi/2: h_beta(0) = -inf made p(c), q(c) nan; the value at x = c is the
+    # one at the nearest double (the s^beta layer is thinner than an ulp), the limit over the doubles
+    s = flat_punch(nu=0.0, mu=1e300)
+    x = np.array([np.nextafter(s.c, 0.0), s.c, np.nextafter(s.c, 2.0)])
+    p, q = s.pressure(x), s.shear(x)
+    assert np.all(np.isfinite(p)) and np.all(np.isfinite(q))
+    assert p[1] == p[2] == 0.0 and q[1] == pytest.approx(q[2], rel=1e-6)  # the slip side: no pressure
+
+
+# ---------------------------------------------------------------- 2. c at c_max
+@pytest.mark.parametrize("nu", [-0.9, -0.5, 0.0, 0.3])
+def test_c_max_to_rounding_is_the_slip_limit(nu):
+    c_max = float(largest_stick_radius(nu))
+    s = flat_punch(nu=nu, c=c_max)
+    assert s.mu == math.inf and "c_max to rounding" in s.route and "limit mu -> inf" in s.route
+    assert np.isfinite(s.error) and s.error < 1e-10
+    assert abs(s.gap - float(largest_stick_radius_gap(float(gamma_from_nu(nu))))) < 1e-12
+    with pytest.raises(NoEigenvalueError):  # beyond c_max by more than rounding
+        flat_punch(nu=nu, c=c_max + 64 * math.ulp(c_max))
+
+
+@pytest.mark.parametrize("nu, k", [(0.0, 6), (0.0, 64), (-0.9, 16), (0.3, 8)])
+def test_just_below_c_max_mu_is_finite_and_its_error_honest(nu, k):
+    # k ulp below c_max: mu gamma = A/excess (the approach, A from the limit problem, excess from the closed
+    # form); its error from A's second order (~1e-6) and O(eps) is far below the solver's here, which comes from
+    # the shift of the level's c_max (measured ratio |mu - approach| / error 0.006 ... 0.6)
+    g = float(gamma_from_nu(nu))
+    c_max = float(largest_stick_radius(nu))
+    c = c_max - k * math.ulp(c_max)
+    s = flat_punch(nu=nu, c=c)
+    expected = stick_radius_approach(nu) / (((1.0 - c) - float(largest_stick_radius_gap(g))) * g)
+    assert math.isfinite(s.mu) and 0.0 < s.error < s.mu
+    assert abs(s.mu - expected) <= s.error
+
+
+# ---------------------------------------------------------------- 3. tiny gamma
+@pytest.mark.parametrize("nu", [0.4999, 0.5])
+def test_slip_limit_at_tiny_gamma_is_adhesive_without_gigabytes(nu):
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    s = slip_limit(nu)
+    g = float(gamma_from_nu(nu))
+    assert s.mu == math.inf and s.c == 1.0
+    assert s.compliance == (float(compliance_adhesive(g)) if g > 0 else 1.0)
+    assert "adhesive" in s.route or "closed form" in s.route
+    with pytest.raises(ValueError, match="gamma"):
+        stick_radius_approach(nu)
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before < 200_000  # kB: no 1.3 GiB layout
+
+
+def test_nearly_adhesive_slip_limit_error_covers_the_solved_limit():
+    # nu = 0.415: 1 - c_max = 1.8e-14 < GAP_ADHESIVE; the limit problem solved anyway (a layout down to 1e-14
+    # is still small) gives P* within the stated error of the adhesive P*, and the closed-form c_max
+    nu = 0.415
+    g = float(gamma_from_nu(nu))
+    gap = float(largest_stick_radius_gap(g))
+    assert gap < GAP_ADHESIVE
+    s = slip_limit(nu)
+    solved = SingularField(solve_given_theta(0.5 * math.pi, g, math.log1p(-gap) - math.log(gap), RESOLUTIONS[2]))
+    assert abs(solved.compliance - s.compliance) <= s.error
+    assert abs(solved.gap - gap) < 1e-3 * gap
+    assert s.error < 1e-11
+
+
+# ---------------------------------------------------------------- 4. error floor at small c
+@pytest.mark.parametrize("nu, c", [(0.0, 1e-5), (0.3, 1e-4)])
+def test_error_covers_the_round_off_at_small_c(nu, c):
+    # level 2 against level 4: before the 1/c floor |dmu| = 8.9e-12 against error 9.8e-13 at nu = 0, c = 1e-5;
+    # the levels scatter by round-off (each ~1e-11 at c = 1e-5), so the bound must hold and stay within 10x
+    g = float(gamma_from_nu(nu))
+    s2, s4 = solve_given_c(nu, c, g, 2), solve_given_c(nu, c, g, 4)
+    assert abs(s2.mu - s4.mu) <= s2.error < 10 * max(abs(s2.mu - s4.mu), 4e-12)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("nu", [-0.5, 0.0, 0.3, 0.45])
+def test_error_covers_the_round_off_at_small_c_everywhere(nu):
+    g = float(gamma_from_nu(nu))
+    for c in (1e-5, 3e-5, 1e-4, 3e-4, 1e-3):
+        s4 = solve_given_c(nu, c, g, 4)
+        for level in (2, 3):
+            s = solve_given_c(nu, c, g, level)
+            assert abs(s.mu - s4.mu) <= s.error

@@ -214,10 +214,24 @@ class _Slice:
         data, constants, found, coefficients = _data()
         self.region, self.gamma = found[name], gamma
         self.ends = u_range(self.region, gamma, *constants)
-        y = to_unit(self.region, self.ends[0], gamma, self.ends)[1]
-        # per key and piece: the coefficients in x at each point's gamma, shape (points, degree in x + 1)
-        self.series = {k: [chebyshev.chebval(y, a.T, tensor=True).T for a in pieces]
-                       for k, pieces in coefficients[name].items()}
+        self.y = to_unit(self.region, self.ends[0], gamma, self.ends)[1]
+        self.coefficients = coefficients[name]
+        self._series: dict[str, list[np.ndarray]] = {}
+
+    def series(self, key: str) -> list[np.ndarray]:
+        """Per piece: the coefficients in x of stored function ``key`` at each point's gamma, shape
+        (points, degree in x + 1); summed over gamma on first use only (what the caller asks for)."""
+        if key not in self._series:
+            self._series[key] = [chebyshev.chebval(self.y, a.T, tensor=True).T for a in self.coefficients[key]]
+        return self._series[key]
+
+    def subset(self, keep: np.ndarray) -> "_Slice":
+        """The slice at the points ``keep`` (a boolean mask), sharing the series summed so far."""
+        part = object.__new__(_Slice)
+        part.region, part.gamma, part.y, part.coefficients = self.region, self.gamma[keep], self.y[keep], self.coefficients
+        part.ends = (self.ends[0][keep], self.ends[1][keep])
+        part._series = {k: [a[keep] for a in v] for k, v in self._series.items()}
+        return part
 
     def x_of(self, u: np.ndarray) -> np.ndarray:
         return to_unit(self.region, u, self.gamma, self.ends)[0]
@@ -230,7 +244,7 @@ class _Slice:
         """The stored function ``key`` at x (or its derivative in u), each point in its own piece."""
         j, t, dt_dx = piece_of(self.region, x)
         out = np.empty(x.shape)
-        for k, a in enumerate(self.series[key]):
+        for k, a in enumerate(self.series(key)):
             rows = np.flatnonzero(j == k)
             if rows.size == 0:
                 continue
@@ -244,31 +258,35 @@ class _Slice:
         u = self.u_of(x)
         return log_mu_and_slope(self.region, u, self.gamma, self.value("eigen", x), self.value("eigen", x, True))
 
-    def fill(self, out: TableValues, rows: np.ndarray, x: np.ndarray, mu: np.ndarray | None) -> None:
+    def fill(self, out: TableValues, rows: np.ndarray, x: np.ndarray, mu: np.ndarray | None,
+             quantities: tuple[str, ...] = QUANTITIES) -> None:
         u = self.u_of(x)
         gap, c = gap_and_c(self.region, u, self.gamma)
         out.gap[rows], out.c[rows] = gap, c
         out.mu[rows] = np.exp(self.log_mu(x)[0]) if mu is None else mu
-        for name in QUANTITIES:
+        for name in quantities:
             out.values[name][rows] = physical_quantity(self.region, name, self.value(name, x), c, self.gamma)
 
 
 def _newton(f: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]], x: np.ndarray, steps: int = 60,
-            tol: float = 1e-15) -> np.ndarray:
+            tol: float = 1e-15, ftol: float = 1e-14) -> np.ndarray:
     """Roots in [-1, 1] of increasing f (value, derivative) = f(x), vectorised: Newton steps kept in the
-    bracket (bisection where a step would leave it), the bracket narrowed by the sign of f."""
+    bracket (bisection where a step would leave it), the bracket narrowed by the sign of f; a point is done
+    when its step is below tol or |f| below ftol (f = log mu - its goal: 1e-14 relative in mu, far below
+    the table's own error; without it points whose last steps wander by rounding ran all 60 steps)."""
     lo, hi = np.full(x.shape, -1.0), np.ones(x.shape)
+    active = np.ones(x.shape, dtype=bool)
     for _ in range(steps):
         value, slope = f(x)
         lo = np.where(value < 0.0, x, lo)
         hi = np.where(value > 0.0, x, hi)
         with np.errstate(divide="ignore", invalid="ignore"):
             new = x - value / slope
-        outside = ~((new > lo) & (new < hi)) | ~np.isfinite(new)
+        outside = ~((new >= lo) & (new <= hi)) | ~np.isfinite(new)
         new = np.where(outside, 0.5 * (lo + hi), new)
-        done = np.abs(new - x) <= tol
-        x = new
-        if np.all(done):
+        active &= ~((np.abs(new - x) <= tol) | (np.abs(value) <= ftol))
+        x = np.where(active, new, x)  # a converged point stays (a bisection step would throw it off)
+        if not active.any():
             break
     return x
 
@@ -283,9 +301,11 @@ def _flat(a, b) -> tuple[np.ndarray, np.ndarray]:
     return a.ravel(), b.ravel()
 
 
-def table_given_c(c: np.ndarray, gamma: np.ndarray, gap: np.ndarray | None = None) -> TableValues:
-    """All tabulated values for stick radius c (nan outside the table's domain); ``gap``: 1 - c where c has
-    rounded it (near c = 1 the relative error of 1 - c is 1e-16/(1 - c), and mu's is that over log(2/(1 - c)))."""
+def table_given_c(c: np.ndarray, gamma: np.ndarray, gap: np.ndarray | None = None,
+                  quantities: tuple[str, ...] = QUANTITIES) -> TableValues:
+    """The tabulated values for stick radius c (nan outside the table's domain, and for the QUANTITIES not
+    asked for); ``gap``: 1 - c where c has rounded it (near c = 1 the relative error of 1 - c is
+    1e-16/(1 - c), and mu's is that over log(2/(1 - c)))."""
     c, gamma = _flat(c, gamma)
     out = _empty(c.size)
     if not table_available():
@@ -309,13 +329,14 @@ def table_given_c(c: np.ndarray, gamma: np.ndarray, gap: np.ndarray | None = Non
             u = special.logit(c[rows])
         else:
             u = np.log(gap[rows]) if region.coordinate == "log_gap" else np.log(gap[rows] / gap_max[rows])
-        piece.fill(out, rows, piece.x_of(u), None)
+        piece.fill(out, rows, piece.x_of(u), None, quantities)
         out.c[rows], out.gap[rows] = c[rows], gap[rows]
     return out
 
 
-def table_given_mu(mu: np.ndarray, gamma: np.ndarray) -> TableValues:
-    """All tabulated values for friction mu (nan outside the table's domain; mu = inf: c = c_max)."""
+def table_given_mu(mu: np.ndarray, gamma: np.ndarray, quantities: tuple[str, ...] = QUANTITIES) -> TableValues:
+    """The tabulated values for friction mu (nan outside the table's domain, and for the QUANTITIES not asked
+    for; mu = inf: c = c_max)."""
     mu, gamma = _flat(mu, gamma)
     out = _empty(mu.size)
     if not table_available():
@@ -330,7 +351,7 @@ def table_given_mu(mu: np.ndarray, gamma: np.ndarray) -> TableValues:
         if region.coordinate == "log_gap_ratio":
             ends = rows[np.isinf(mu[rows])]
             if ends.size:
-                _Slice(name, gamma[ends]).fill(out, ends, np.full(ends.size, -1.0), mu[ends])
+                _Slice(name, gamma[ends]).fill(out, ends, np.full(ends.size, -1.0), mu[ends], quantities)
                 candidate[ends] = False
             rows = rows[np.isfinite(mu[rows])]
         if rows.size == 0:
@@ -342,17 +363,18 @@ def table_given_mu(mu: np.ndarray, gamma: np.ndarray) -> TableValues:
         high = piece.log_mu(np.full(rows.size, sign))[0] < target[rows]  # mu above its greatest
         candidate[rows[~high]] = False  # answered here, or below the table (mu < mu(C_MIN): the law's)
         # only S has a lower end in mu; in N and L a mu a rounding below the end is the end's
-        rows = rows[~(low | high)] if region.coordinate == "logit_c" else rows[~high]
+        keep = ~(low | high) if region.coordinate == "logit_c" else ~high
+        rows = rows[keep]
         if rows.size == 0:
             continue
-        piece, goal = _Slice(name, gamma[rows]), target[rows]
+        piece, goal = piece.subset(keep), target[rows]
         scale = 0.5 * (piece.ends[1] - piece.ends[0])
 
         def f(x, piece=piece, goal=goal, sign=sign, scale=scale):
             value, slope = piece.log_mu(x)
             return sign * (value - goal), sign * slope * scale
 
-        piece.fill(out, rows, _newton(f, np.zeros(rows.size)), mu[rows])
+        piece.fill(out, rows, _newton(f, np.zeros(rows.size)), mu[rows], quantities)
     return out
 
 
@@ -360,19 +382,19 @@ def table_least_mu(gamma: float) -> float:
     """mu at the table's least stick radius C_MIN (nan without the table): below it c < C_MIN."""
     if not table_available() or not 0.0 < gamma <= _data()[2]["S"].gamma_range[1]:
         return math.nan
-    return float(table_given_c(_data()[1][0], gamma).mu[0])
+    return float(table_given_c(_data()[1][0], gamma, quantities=()).mu[0])
 
 
 def table_friction_coefficient(c: np.ndarray, gamma: np.ndarray) -> np.ndarray:
     """mu(c, gamma) from the table (nan outside its domain)."""
-    return table_given_c(c, gamma).mu
+    return table_given_c(c, gamma, quantities=()).mu
 
 
 def table_compliance(c: np.ndarray, gamma: np.ndarray) -> np.ndarray:
     """P*(c, gamma) from the table (nan outside its domain)."""
-    return table_given_c(c, gamma).values["compliance"]
+    return table_given_c(c, gamma, quantities=("compliance",)).values["compliance"]
 
 
 def table_stick_radius(mu: np.ndarray, gamma: np.ndarray) -> np.ndarray:
     """c(mu, gamma) from the table (nan outside its domain)."""
-    return table_given_mu(mu, gamma).c
+    return table_given_mu(mu, gamma, quantities=()).c

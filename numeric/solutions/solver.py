@@ -119,7 +119,7 @@ TABLE_STEP, LAW_STEP = 1e-6, 1e-3
 def _logit_guess(mu: float, gamma: float) -> tuple[float, float]:
     """logit(c) from the table, else the second-order law, kept below the largest stick radius; and the
     first secant step that suits the guess."""
-    found = table_given_mu(mu, gamma)  # nan outside the table (or without it)
+    found = table_given_mu(mu, gamma, quantities=())  # nan outside the table (or without it)
     c, gap = float(found.c[0]), float(found.gap[0])
     if 0.0 < c < 1.0:
         return math.log(c) - math.log(gap), TABLE_STEP

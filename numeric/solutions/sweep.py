@@ -25,9 +25,10 @@ from numpy.typing import ArrayLike
 
 from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
 
-from numeric.core.table import table_available, table_errors, table_friction_coefficient, table_stick_radius
+from numeric.core.table import (table_available, table_errors, table_friction_coefficient, table_least_mu,
+                                table_stick_radius)
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
-from numeric.solutions.law import LawRoute
+from numeric.solutions.law import LawRoute, law_stick_radius
 from numeric.solutions.solution import first_meeting
 
 __all__ = ["Executor", "TABLE_MARGIN", "table_meets", "stick_radius", "friction_coefficient"]
@@ -45,6 +46,11 @@ class Executor(Protocol):
 
 
 def _solved_c(mu: float, nu: float, level: int | None, rtol: float | None) -> float:
+    gamma = float(gamma_from_nu(nu))
+    if rtol is None and 0.0 < mu < table_least_mu(gamma):
+        # below the table's least c (C_MIN = 1e-5) flat_punch answers by the second-order law: its c directly,
+        # without the bracket and the P* it also computes
+        return law_stick_radius(mu, gamma, 2)
     return flat_punch(nu=nu, mu=mu, level=level, rtol=rtol).c
 
 

@@ -156,6 +156,17 @@ def test_table_csv_and_json(capsys, tmp_path):
     assert data[0]["c"] == pytest.approx(float(rows[0]["c"]), rel=1e-15)
 
 
+def test_table_csv_cells_are_numbers(capsys):
+    # numpy 2 prints its scalars as np.float64(...): every numeric cell must parse as a float
+    code, out, _ = run(capsys, ["table", "--mu", "0.3:1e4:2", "--nu", "0:0.3:2", "--sphere"])
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert code == 0 and len(rows) == 4
+    for r in rows:
+        for key, value in r.items():
+            if key not in ("route", "status") and value != "":
+                float(value)
+
+
 def test_table_failed_row_exit_1(capsys, monkeypatch):
     real = numeric.flat_punch
 

@@ -338,7 +338,8 @@ def _format_rows(rows: list[dict], fmt: str) -> str:
     writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
     writer.writeheader()
     for r in rows:
-        writer.writerow({k: "" if v is None else (repr(v) if isinstance(v, float) else v) for k, v in r.items()})
+        # repr of a plain float (numpy 2 writes np.float64(...) for its own scalars): shortest round-trip digits
+        writer.writerow({k: "" if v is None else (repr(float(v)) if isinstance(v, float) else v) for k, v in r.items()})
     return buffer.getvalue()
 
 

@@ -167,6 +167,14 @@ def test_table_csv_cells_are_numbers(capsys):
                 float(value)
 
 
+def test_negative_values_reach_the_checks(capsys):
+    # argparse alone reads "-1e9" and "-0.9:0.49:3" as options ("expected one argument")
+    code, _, err = run(capsys, ["sphere", "--radius", "0.005", "--load", "100", "--E", "-1e9", "--nu", "0.22", "--mu", "0.3"])
+    assert code == 2 and "E (Young's modulus, Pa) must be finite and > 0" in err
+    code, out, _ = run(capsys, ["table", "--mu", "0.3", "--nu", "-0.9:0.49:3"])
+    assert code == 0 and [float(r["nu"]) for r in csv.DictReader(io.StringIO(out))] == [-0.9, -0.205, 0.49]
+
+
 def test_table_failed_row_exit_1(capsys, monkeypatch):
     real = numeric.flat_punch
 

@@ -17,6 +17,7 @@ import csv
 import io
 import json
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -420,13 +421,30 @@ _RUN = {"solve": _run_solve, "table": _run_table, "figures": _run_figures, "benc
         "stability": _run_stability, "derivations": _run_derivations, "tables": _run_tables}
 
 
+def _attach_negative_values(argv: list[str]) -> list[str]:
+    """``--opt -1e9`` as ``--opt=-1e9``: argparse takes a value that starts with '-' for an option unless it
+    looks like a plain negative number, which ``-1e9`` or a range ``-0.9:0.49:10`` does not."""
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        token = argv[i]
+        if (token.startswith("--") and "=" not in token and i + 1 < len(argv)
+                and re.match(r"-(\d|\.\d|inf|nan)", argv[i + 1], re.IGNORECASE)):
+            out.append(f"{token}={argv[i + 1]}")
+            i += 2
+        else:
+            out.append(token)
+            i += 1
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``hertz-friction`` console script; returns the exit code."""
     from numeric import NoEigenvalueError, SolverError
 
     parser = _build_parser()
     try:
-        args = parser.parse_args(list(sys.argv[1:] if argv is None else argv))
+        args = parser.parse_args(_attach_negative_values(list(sys.argv[1:] if argv is None else argv)))
     except SystemExit as exc:  # --help (0) or a usage error (2); argparse has printed the message
         return exc.code if isinstance(exc.code, int) else 2
     run = _RUN.get(args.command, _run_physical)

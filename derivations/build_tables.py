@@ -25,7 +25,6 @@ from pathlib import Path
 
 import numpy as np
 
-from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from numeric import slip_limit
 from numeric.core import table
 from numeric.solutions.power_law import displacement_constant, indentation_constant
@@ -136,7 +135,12 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a small grid (tests of the script itself)")
     parser.add_argument("--output", type=Path, default=ROOT / "numeric" / "core" / "table_data.py")
+    parser.add_argument("--check-only", action="store_true",
+                        help="re-check the tables in OUTPUT at new held-out points and rewrite only their ERRORS")
     args = parser.parse_args()
+    if args.check_only:
+        recheck(args.output)
+        return
     sizes = QUICK if args.quick else SIZES
     t0 = time.perf_counter()
     rng = np.random.default_rng(20261125)
@@ -149,6 +153,22 @@ def main() -> None:
         write(args.output, coefs, errors=None)
         errors = check(pool, rng, args.output, {k: (v if not args.quick else 4) for k, v in N_CHECK.items()})
     write(args.output, coefs, errors)
+    print(f"errors: {errors}; {time.perf_counter() - t0:.0f} s", file=sys.stderr)
+
+
+def recheck(path: Path) -> None:
+    """The check of ``main`` on the tables already in ``path`` (their coefficients unchanged)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("built_table_data", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    coefs = {name: {k: [np.array(piece) for piece in v] for k, v in module.COEFFICIENTS[name].items()}
+             for name in table.REGIONS}
+    t0 = time.perf_counter()
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        errors = check(pool, np.random.default_rng(20261125), path, N_CHECK)
+    write(path, coefs, errors)
     print(f"errors: {errors}; {time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
 
@@ -166,6 +186,12 @@ def check(pool, rng, path: Path, n_check: dict[str, int]) -> dict[str, float]:
         for _ in range(n_check[name]):
             g = float(gamma_at(region, rng.uniform(-1.0, 1.0)))
             points.append((name, u_at(region, float(rng.uniform(-1.0, 1.0)), g), g))
+        # the corners and edge midpoints, where interpolants are weakest (gamma = 0 and, in L0, L1, mu = inf
+        # at x = -1 are limits, approached to 1e-3 of the edge)
+        for x in (-0.999, 0.0, 1.0):
+            for y in (-0.999, 0.0, 1.0):
+                g = float(gamma_at(region, y))
+                points.append((name, u_at(region, x, g), g))
     errors = {name: 0.0 for name in ("mu", "c", "gap") + table.QUANTITIES}
     worst: dict[str, tuple] = {}
 

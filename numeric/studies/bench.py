@@ -1,14 +1,15 @@
 """Run time against error of every method for the flat punch and the sphere ([S75] §2, §3, §4).
 
 Measures, for the cases nu in {0, 0.25, 0.45} x c in {0.1, 0.5, 0.9} plus the fully
-adhesive case c = 1 for each nu, every method at every resolution it offers:
+adhesive case c = 1 for each nu, and near the largest stick radius (nu = 0: c = 0.99, 0.998;
+nu = -0.5: c = 0.95, 0.98), every method at every resolution it offers:
 
 * the paper's scheme ``numeric.baseline.scheme`` ([S75] §4): ``solve_friction`` on the friction
   mesh of §4.1 with coarse width h = 0.04 ... 0.0025 (N ~ 30 ... 460 intervals; h = 0.02 is
   the paper's), ``solve_adhesive`` on uniform meshes N = 25 ... 800 (N = 50 is the paper's
   mesh (ii)) and on the graded meshes (iii), (iv); the sphere's A by ``sphere_from_flat``
   ((4.13)-(4.17));
-* our solver ``numeric.flat_punch`` at levels 1-4 (mu, P*, p(0) for given c; c for given
+* our solver ``numeric.flat_punch`` at levels 0-4 (mu, P*, p(0) for given c; c for given
   mu), at c = 1 the discrete adhesive solver ``numeric.core.graded_collocation.solve_adhesive`` (``flat_punch``
   itself returns the closed form there, also listed); A by ``indentation_constant`` on the
   flat solution (what ``power_law(2, ...).A`` computes);
@@ -35,6 +36,10 @@ depend on c or gamma.
 
     hertz-friction bench            # writes derivations/benchmark.md and .png (minutes)
     hertz-friction bench --quick    # nu = 0.25, c = 0.5 and 1, coarser meshes; prints only
+
+``side_by_side`` times the tasks of the whole-plane issue in the same run as the paper's scheme at
+h = 0.01: the full solution for given c and for given mu, inside c <= 0.95 and near c_max, at the
+default level and through the rtol = 1e-4 route, and ``stick_radius`` over 1000 random points.
 
 This module measures; ``numeric.studies.bench_report`` renders the Markdown and the plot.
 
@@ -80,6 +85,8 @@ __all__ = [
     "CrossCheck",
     "Headline",
     "Benchmark",
+    "SideBySide",
+    "side_by_side",
     "FULL",
     "QUICK",
     "median_time",
@@ -144,14 +151,17 @@ class Config:
     scheme_h: tuple[float, ...] = (0.04, 0.02, 0.01, 0.005, 0.0025)
     scheme_n: tuple[int, ...] = (25, 50, 100, 200, 400, 800)
     graded_meshes: tuple[str, ...] = ("iii", "iv")
-    levels: tuple[int, ...] = (1, 2, 3, 4)
+    levels: tuple[int, ...] = (0, 1, 2, 3, 4)
     methods: frozenset[str] = frozenset({"scheme", "solver", "table", "asymptotic"})
     setup: bool = True
     budget: float = 0.5
     max_runs: int = 5
 
 
-FULL = Config(cases=tuple(Case(nu, c) for nu in (0.0, 0.25, 0.45) for c in (0.1, 0.5, 0.9, 1.0)))
+#: nu in {0, 0.25, 0.45} x c in {0.1, 0.5, 0.9, 1}, and near the largest stick radius: nu = 0 (c_max = 0.998997),
+#: c = 0.99, 0.998; nu = -0.5 (c_max = 0.982778), c = 0.95, 0.98.
+FULL = Config(cases=tuple(Case(nu, c) for nu in (0.0, 0.25, 0.45) for c in (0.1, 0.5, 0.9, 1.0))
+              + (Case(0.0, 0.99), Case(0.0, 0.998), Case(-0.5, 0.95), Case(-0.5, 0.98)))
 QUICK = Config(
     cases=(Case(0.25, 0.5), Case(0.25, 1.0)),
     scheme_h=(0.04, 0.02, 0.01, 0.005),
@@ -263,6 +273,20 @@ class Headline:
 
 
 @dataclass(frozen=True, slots=True)
+class SideBySide:
+    """One task timed in the same run as the paper's scheme at h = 0.01: ``seconds`` (median; per call),
+    ``ratio`` = seconds / the scheme's, ``error`` the worst relative error over ``points`` points
+    against ``reference``."""
+
+    task: str
+    seconds: float
+    ratio: float
+    error: float
+    points: int
+    reference: str
+
+
+@dataclass(frozen=True, slots=True)
 class Benchmark:
     config: Config
     references: tuple[Reference, ...]
@@ -271,6 +295,7 @@ class Benchmark:
     checks: tuple[CrossCheck, ...]
     seconds: float
     machine: dict = field(default_factory=dict)
+    side_by_side: tuple[SideBySide, ...] = ()
 
 
 # --------------------------------------------------------------------------------- timing
@@ -421,7 +446,7 @@ def _measure_solver(case: Case, ref: Reference, config: Config, solved: dict | N
 
 def _measure_table(case: Case, ref: Reference, config: Config) -> list[Row]:
     if case.adhesive:
-        return []  # c = 1 lies outside the table (c <= 0.95)
+        return []  # c = 1 lies outside the table (it ends at 1 - c = 1e-13, or at c_max)
     mu, t_mu = _timed(lambda: friction_coefficient(case.c, case.nu), config)
     c, t_c = _timed(lambda: stick_radius(ref.mu, case.nu), config)
     p, t_p = _timed(lambda: float(table_compliance(case.c, case.gamma)[0]), config)
@@ -540,8 +565,71 @@ def run(config: Config = FULL, progress: Callable[[str], object] | None = None) 
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     machine = {"cores": os.cpu_count(), "blas_threads": os.environ.get("OPENBLAS_NUM_THREADS", "unset"),
                "load": load}
+    note("side by side with the paper's scheme at h = 0.01")
+    sides = side_by_side(config) if "scheme" in config.methods and "solver" in config.methods else ()
     return Benchmark(config, tuple(references), tuple(rows), tuple(setups), tuple(_cross_checks(rows, references)),
-                     time.perf_counter() - start, machine)
+                     time.perf_counter() - start, machine, tuple(sides))
+
+
+# --------------------------------------------------------------------------- side by side
+SIDE_H = 0.01
+BATCH = 1000
+
+
+def side_by_side(config: Config) -> list[SideBySide]:
+    """The tasks of issue 11 timed in one run against the paper's scheme at h = 0.01 (nu = 0.25, c = 0.5).
+
+    References: level 4 for the single solves (its error is ~1e-13), level 2 at 40 of the 1000
+    random points of the batch (the table's error bound is 1e-10-ish, level 2's ~1e-11)."""
+    budget, runs = config.budget, config.max_runs
+    clear = scheme.collocation_matrix.cache_clear
+    ref_mid = flat_punch(nu=0.25, c=0.5, level=4)
+    sch = scheme.solve_friction(0.5, 0.25, h=SIDE_H, tol=_scheme_tol(SIDE_H))
+    t_scheme = median_time(lambda: scheme.solve_friction(0.5, 0.25, h=SIDE_H, tol=_scheme_tol(SIDE_H)), before=clear,
+                           budget=budget, max_runs=runs)
+    out = [SideBySide("paper's scheme, h = 0.01, nu = 0.25, c = 0.5 (mu, P*)", t_scheme, 1.0,
+                      max(abs(sch.mu / ref_mid.mu - 1), abs(sch.compliance / ref_mid.compliance - 1)), 1, "level 4")]
+
+    def full(s) -> tuple:  # what "the full solution" returns: mu or c, P*, p, q, u at a few points
+        x = np.array([0.0, 0.5 * s.c, s.c, 0.5 * (1 + s.c)])
+        return s.mu, s.c, s.compliance, s.pressure(x), s.shear(x), s.slip(x)
+
+    def task(label: str, calls: list[tuple[Callable[[], object], Callable[[object], float]]], reference_: str) -> None:
+        times, errors = [], []
+        for call, error in calls:
+            value = call()
+            times.append(median_time(lambda call=call: full(call()), budget=budget, max_runs=runs, warm=True))
+            errors.append(error(value))
+        t = statistics.median(times)
+        out.append(SideBySide(label, t, t / t_scheme, max(errors), len(calls), reference_))
+
+    def given_c(nu: float, c: float, **kw):
+        ref = flat_punch(nu=nu, c=c, level=4)
+        return (lambda: flat_punch(nu=nu, c=c, **kw),
+                lambda s: max(abs(s.mu / ref.mu - 1), abs(s.compliance / ref.compliance - 1)))
+
+    def given_mu(nu: float, c: float, **kw):
+        ref = flat_punch(nu=nu, c=c, level=4)
+        return (lambda: flat_punch(nu=nu, mu=ref.mu, **kw),
+                lambda s: max(abs(s.gap / ref.gap - 1), abs(s.compliance / ref.compliance - 1)))
+
+    inside = [(0.0, 0.1), (0.0, 0.5), (0.25, 0.5), (0.25, 0.9), (0.45, 0.5), (-0.5, 0.5)]
+    near = [(0.0, 0.99), (0.0, 0.998), (-0.5, 0.95), (-0.5, 0.98), (0.3, 0.9999)]
+    task("full solution for given c <= 0.95 (level 2)", [given_c(nu, c) for nu, c in inside], "level 4")
+    task("full solution for given c near c_max (level 2)", [given_c(nu, c) for nu, c in near], "level 4")
+    task("full solution for given mu, c <= 0.95 (level 2)", [given_mu(nu, c) for nu, c in inside], "level 4")
+    task("full solution for given mu near c_max (level 2)", [given_mu(nu, c) for nu, c in near], "level 4")
+    task("full solution for given c, rtol = 1e-4", [given_c(nu, c, rtol=1e-4) for nu, c in inside + near], "level 4")
+    task("full solution for given mu, rtol = 1e-4", [given_mu(nu, c, rtol=1e-4) for nu, c in inside + near], "level 4")
+    rng = np.random.default_rng(11)
+    mus, nus = rng.uniform(0.05, 2.0, BATCH), rng.uniform(-0.5, 0.49, BATCH)
+    batch = stick_radius(mus, nus)
+    t_batch = median_time(lambda: stick_radius(mus, nus), budget=budget, max_runs=runs, warm=True)
+    check = [(m, n, c) for m, n, c in zip(mus[:40], nus[:40], batch[:40])]
+    err = max(abs(c / flat_punch(nu=n, mu=m).c - 1) for m, n, c in check)
+    out.append(SideBySide(f"stick_radius of {BATCH} random (mu, nu), mu in [0.05, 2], nu in [-0.5, 0.49] (one call)",
+                          t_batch, t_batch / t_scheme, err, 40, "level 2 at 40 of the points"))
+    return out
 
 
 # ------------------------------------------------------------------------------ headline

@@ -43,7 +43,7 @@ def _headline_lines(h: Headline, where: str) -> list[str]:
         f"for {h.target:.0e} (extrapolated, median over the cases).",
     ]
     if h.our_error_in_paper_time is None:
-        lines.append(f"  - In the paper's time none of our solver's levels runs (the cheapest, level 1, takes "
+        lines.append(f"  - In the paper's time none of our solver's levels runs (the cheapest, level 0, takes "
                      f"{_ms(h.our_fastest_seconds)} ms)" + (
                          f"; the Chebyshev table route reaches {h.table_error:.1e} in {_ms(h.table_seconds)} ms."
                          if h.table_error is not None else "."))
@@ -81,7 +81,8 @@ def _quantity_table(rows: Sequence[Row], quantity: str, adhesive: bool) -> list[
 
 def render(bench: Benchmark) -> str:
     """The Markdown record (rows in a fixed order; the timings themselves vary from run to run)."""
-    lines = _preamble(bench) + _headlines(bench) + _references(bench) + _setups(bench) + _every_method(bench)
+    lines = (_preamble(bench) + _side_by_side(bench) + _headlines(bench) + _references(bench) + _setups(bench)
+             + _every_method(bench))
     return "\n".join(lines) + "\n"
 
 
@@ -103,6 +104,19 @@ def _preamble(bench: Benchmark) -> list[str]:
         "0.076 s single-threaded (level 4: 2.1 s against 0.77 s).",
         "",
     ]
+
+
+def _side_by_side(bench: Benchmark) -> list[str]:
+    if not bench.side_by_side:
+        return []
+    lines = ["## Side by side with the paper's scheme at h = 0.01 (one run)", "",
+             "Each task returns the full solution (mu or c, P*, and p, q, u at four points); times are medians per "
+             "call, the ratio is to the paper's scheme at h = 0.01 (nu = 0.25, c = 0.5) timed in the same run, the "
+             "error the worst relative error of mu or 1 - c and of P* over the points.", "",
+             "| task | time, ms | ratio to the scheme | worst error | points | reference |", "|---|---|---|---|---|---|"]
+    lines += [f"| {s.task} | {_ms(s.seconds)} | {s.ratio:.3g} | {_err(s.error)} | {s.points} | {s.reference} |"
+              for s in bench.side_by_side]
+    return lines + [""]
 
 
 def _headlines(bench: Benchmark) -> list[str]:

@@ -115,8 +115,9 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
 
     Inside the table's domain (``numeric.core.table``: c >= 1e-5 up to the largest stick radius, every
-    nu in (-1, 1/2]; for nu > 0.34 up to 1 - c = 1e-10) c comes from the Chebyshev tables (a few
-    microseconds a point, errors ``numeric.core.table_data.ERRORS``); elsewhere, or with
+    nu in (-1, 1/2]; for gamma <= 0.1, nu >= 0.44, up to 1 - c = 1e-13) c comes from the Chebyshev
+    tables (~50 microseconds a point for 1000 points at once, errors
+    ``numeric.core.table_data.ERRORS``); below c = 1e-5 from the second-order law; elsewhere, or with
     ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
     ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
     with a progress line on stderr when ``progress`` is true.

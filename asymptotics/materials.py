@@ -37,7 +37,12 @@ __all__ = [
 
 
 def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
+    """``value`` as a float array: real numbers only (no None, strings, complex or objects: TypeError naming
+    ``name``), and no NaN (ValueError)."""
+    raw = np.asarray(value) if value is not None else None
+    if raw is None or raw.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must be a real number or an array of real numbers, got {value!r}")
+    arr = raw.astype(float)
     if np.any(np.isnan(arr)):
         raise ValueError(f"{name} must not be NaN, got {value!r}")
     return arr

@@ -450,7 +450,7 @@ def main(argv: list[str] | None = None) -> int:
     run = _RUN.get(args.command, _run_physical)
     try:
         return run(args)
-    except ValueError as err:
+    except (ValueError, TypeError) as err:
         sys.stderr.write(f"hertz-friction {args.command}: error: {err}\n")
         return 2
     except (SolverError, NoEigenvalueError) as err:

@@ -30,8 +30,11 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
+import numpy as np
+from numpy.typing import ArrayLike
+
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
-from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
+from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, resolve_gamma
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
@@ -142,14 +145,23 @@ def flat_punch(
     >>> flat_punch(nu=0.25, mu=1e-4).route.startswith("asymptotic, second order")   # c ~ 1e-130
     True
     """
-    g = resolve_gamma(nu, gamma)
-    nu_value = None if nu is None else float(check_nu(nu))
+    nu_value = None if nu is None else _scalar(check_nu(nu), "nu")
+    g = resolve_gamma(nu_value, None if gamma is None else _scalar(check_gamma(gamma), "gamma"))
     if (mu is None) == (c is None):
         raise ValueError("give exactly one of mu (friction coefficient) or c (stick radius)")
     level_value, rtol_value = level_and_rtol(level, rtol)
     if c is not None:
-        return _given_c(nu_value, g, float(check_c(c)), level_value, rtol_value)
-    return _given_mu(nu_value, g, float(check_mu(mu)), level_value, rtol_value)
+        return _given_c(nu_value, g, _scalar(check_c(c), "c"), level_value, rtol_value)
+    return _given_mu(nu_value, g, _scalar(check_mu(mu), "mu"), level_value, rtol_value)
+
+
+def _scalar(value: ArrayLike, name: str) -> float:
+    """A checked argument as a float; flat_punch solves one problem (arrays: stick_radius, friction_coefficient)."""
+    arr = np.asarray(value, dtype=float)
+    if arr.size != 1:
+        raise TypeError(f"{name} must be a single number for flat_punch, got shape {arr.shape}; "
+                        "stick_radius and friction_coefficient take arrays")
+    return float(arr.reshape(()))
 
 
 def _given_c(nu: float | None, gamma: float, c: float, level: int, rtol: float | None) -> FlatPunchSolution:

@@ -211,3 +211,11 @@ def test_derivations_subcommand_runs_the_repository_generator(capsys):
     assert main(["derivations", "--help"]) == 0
     assert "--check" in capsys.readouterr().out
     assert main(["derivations", "--no-such-flag"]) == 2
+
+
+def test_every_subcommand_describes_itself(capsys):
+    # --help prints a description, not just the usage line (issue 13: `tables --help` was empty)
+    for command in ("tables", "table", "derivations", "bench", "stability", "figures", "sphere", "solve"):
+        code, out, _ = run(capsys, [command, "--help"])
+        assert code == 0 and len(out.split("options:")[0].strip().splitlines()) >= 3, command
+

@@ -149,7 +149,11 @@ def _study_parsers(commands) -> None:
     p.add_argument("--check", action="store_true", help="compare with the committed files instead of writing")
     p.add_argument("--directory", type=Path, default=None,
                    help="the derivations folder (default: derivations/ of the source checkout)")
-    commands.add_parser("tables", help="print the tables of Spence (1975) beside our recomputation and the exact values")
+    commands.add_parser(
+        "tables", help="print the tables of Spence (1975) beside our recomputation and the exact values",
+        description="Print the paper's tables (the mesh and nu tables of §4, mu(c) of §4.2, 1/A of the sphere) "
+                    "beside the paper's own scheme rerun and the full solution (numeric.studies.paper_tables; "
+                    "the same as derivations/paper_tables.md). Takes about half a minute.")
 
 
 def _elastic_bodies(args):

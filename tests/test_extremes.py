@@ -113,13 +113,15 @@ def test_nearly_adhesive_slip_limit_error_covers_the_solved_limit():
 
 
 # ---------------------------------------------------------------- 4. error floor at small c
-@pytest.mark.parametrize("nu, c", [(0.0, 1e-5), (0.3, 1e-4)])
-def test_error_covers_the_round_off_at_small_c(nu, c):
-    # level 2 against level 4: before the 1/c floor |dmu| = 8.9e-12 against error 9.8e-13 at nu = 0, c = 1e-5;
-    # the levels scatter by round-off (each ~1e-11 at c = 1e-5), so the bound must hold and stay within 10x
+@pytest.mark.parametrize("nu, c, scatter", [(0.0, 1e-5, 1.6e-11), (0.3, 1e-4, 3.7e-12)])
+def test_error_covers_the_round_off_at_small_c(nu, c, scatter):
+    # level 2 against level 4: before the 1/c floor |dmu| = 8.9e-12 against error 9.8e-13 at nu = 0, c = 1e-5.
+    # The levels differ by round-off there, which changes from one numpy/BLAS build to another (3.2e-12 on a
+    # fresh install, 8.9e-12 here): the bound must hold, and stay within 10x of the round-off scale, the
+    # largest difference between levels 2, 3, 4 measured over nu in {-0.5, 0, 0.3, 0.45} (``scatter``)
     g = float(gamma_from_nu(nu))
     s2, s4 = solve_given_c(nu, c, g, 2), solve_given_c(nu, c, g, 4)
-    assert abs(s2.mu - s4.mu) <= s2.error < 10 * max(abs(s2.mu - s4.mu), 4e-12)
+    assert abs(s2.mu - s4.mu) <= s2.error < 10 * max(abs(s2.mu - s4.mu), scatter)
 
 
 @pytest.mark.slow

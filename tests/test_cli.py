@@ -219,3 +219,14 @@ def test_every_subcommand_describes_itself(capsys):
         code, out, _ = run(capsys, [command, "--help"])
         assert code == 0 and len(out.split("options:")[0].strip().splitlines()) >= 3, command
 
+
+
+def test_error_line_says_of_what(capsys):
+    # issue 13: "estimated error" did not say of what; given mu the error bounds c and P*, given c mu and P*
+    _, out, _ = run(capsys, ["solve", "--nu", "0.25", "--mu", "0.3"])
+    assert "estimated absolute error of c and P*:" in out
+    _, out, _ = run(capsys, ["solve", "--nu", "0.25", "--c", "0.5"])
+    assert "estimated absolute error of mu and P*:" in out
+    # the asymptotic route computes no slip displacement, and says so (not "no slip", which reads as stick)
+    _, out, _ = run(capsys, ["solve", "--nu", "0.45", "--mu", "1e-3"])
+    assert "slip displacement not computed" in out and "no slip" not in out

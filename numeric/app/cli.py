@@ -233,7 +233,7 @@ def _describe(s) -> str:
         lines.append(f"{name:24}{value:{width}}{reference:{width}}{'' if ratio is None else f'{ratio:.6g}'}")
     lines += ["", f"stick fraction c = {s.c:.9g}, P* = {s.compliance:.9g} (flat punch P0* = {s.flat_compliance:.9g})"
               + ("" if s.A is None else f", A = {s.A:.9g}"),
-              f"route: {s.route}; estimated error {s.error:.1e}"]
+              f"route: {s.route}; estimated absolute error of c and P*: {s.error:.1e}"]
     return "\n".join(lines) + "\n"
 
 
@@ -259,7 +259,8 @@ def _run_solve(args) -> int:
     if law is not None:
         out += [f"power law n = {law.n:g}: A = {law.A:.9g} (delta = A a^n / b^(n-1), (3.2)), C = {law.C:.9g} (3.4), "
                 f"P* = {law.compliance:.9g} (3.17)"]
-    out.append(f"route: {sol.route}; estimated error {sol.error:.1e}")
+    found = "mu" if args.c is not None else "c"
+    out.append(f"route: {sol.route}; estimated absolute error of {found} and P*: {sol.error:.1e}")
     sys.stdout.write("\n".join(out) + "\n")
     return 0
 

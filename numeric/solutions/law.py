@@ -122,7 +122,7 @@ class FirstOrderField:
 def route_text(order: int, bound: float, bound_p: float, why: str) -> str:
     return (f"asymptotic, {LAW_NAMES[order]}: relative error of mu <= {bound:.2g} (measured bound, c <= "
             f"{ASYMPTOTIC_C_MAX}), of P* <= {bound_p:.2g}; stresses at first order (2.26), (2.31), relative error "
-            f"O(gamma^2); no slip ({why})")
+            f"O(gamma^2); slip displacement not computed ({why})")
 
 
 @dataclass(frozen=True, slots=True)

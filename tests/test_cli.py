@@ -4,6 +4,7 @@ import csv
 import io
 import json
 import math
+import sys
 
 import pytest
 
@@ -230,3 +231,13 @@ def test_error_line_says_of_what(capsys):
     # the asymptotic route computes no slip displacement, and says so (not "no slip", which reads as stick)
     _, out, _ = run(capsys, ["solve", "--nu", "0.45", "--mu", "1e-3"])
     assert "slip displacement not computed" in out and "no slip" not in out
+
+
+def test_unwritable_output_and_missing_matplotlib_are_one_line_errors(capsys, monkeypatch, tmp_path):
+    code, out, err = run(capsys, ["table", "--mu", "0.3", "--nu", "0.2", "--output", str(tmp_path / "no" / "x.csv")])
+    assert code == 2 and err.startswith("hertz-friction table: error: cannot write") and len(err.splitlines()) == 1
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib now raises ImportError
+    monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
+    code, out, err = run(capsys, ["figures", "--only", "fig2_chi0", "--output", str(tmp_path)])
+    assert code == 2 and "pip install -e \".[plot]\"" in err and len(err.splitlines()) == 1
+

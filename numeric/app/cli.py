@@ -458,6 +458,13 @@ def main(argv: list[str] | None = None) -> int:
     except (ValueError, TypeError) as err:
         sys.stderr.write(f"hertz-friction {args.command}: error: {err}\n")
         return 2
+    except OSError as err:  # an --output that cannot be written
+        sys.stderr.write(f"hertz-friction {args.command}: error: cannot write {err.filename or ''}: {err.strerror or err}\n")
+        return 2
+    except ImportError as err:  # the plot extra is not installed
+        sys.stderr.write(f"hertz-friction {args.command}: error: {err.name or err} is needed here; "
+                         "install it with pip install -e \".[plot]\"\n")
+        return 2
     except (SolverError, NoEigenvalueError) as err:
         sys.stderr.write(f"hertz-friction {args.command}: numerical failure: {err}\n")
         return 1

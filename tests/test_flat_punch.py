@@ -32,15 +32,6 @@ def _gamma(nu: float) -> float:
     return (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu)
 
 
-def _adhesive_exact(gamma: float) -> tuple[float, float, float]:
-    """P* (B4), p0(0) and lim q0/x (4.10) of the adhesive punch, in mpmath at 30 digits."""
-    with mpmath.workdps(30):
-        g = mpmath.mpf(gamma)
-        kappa = 2 * mpmath.atanh(g) / mpmath.pi
-        p0 = kappa / g * mpmath.cosh(mpmath.pi * kappa / 2)
-        return float(mpmath.atanh(g) / g), float(p0), float(kappa * p0 / 2)
-
-
 # ---------------------------------------------------------------------------------------
 # 1. Exact limits
 # ---------------------------------------------------------------------------------------

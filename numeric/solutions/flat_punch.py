@@ -193,7 +193,7 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
     # saturation at c_max (at gamma = 0.13, mu = 2 it puts 1 - c at 1e-21, the table at 6.5e-12)
     found = table_given_mu(mu, gamma, quantities=())
     if math.isfinite(found.gap[0]):
-        solver = SolverRoute(nu, gamma, None, mu, float(found.c[0]), float(found.gap[0]))
+        solver = SolverRoute(nu, gamma, None, mu, float(found.c[0]), float(found.gap[0]), found)
     elif mu < table_least_mu(gamma):  # c < C_MIN: below the solver's reach, whatever the law's estimate
         solver = SolverRoute(nu, gamma, None, mu, 0.0)
     else:

@@ -32,7 +32,6 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
-from scipy.special import logit
 
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
@@ -44,7 +43,7 @@ from numeric.core.eigenvalue import solve_given_c as core_given_c
 from numeric.core.eigenvalue import solve_given_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.fields import SingularField
-from numeric.core.table import table_available, table_friction_coefficient, table_given_mu
+from numeric.core.table import TableValues, table_available, table_friction_coefficient, table_given_mu
 from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, closed_form, no_eigenvalue
 from numeric.solutions.solution import FlatPunchSolution, Offer, warn_unmet
 
@@ -116,10 +115,11 @@ def _theta_guess(c: float, gamma: float) -> float:
 TABLE_STEP, LAW_STEP = 1e-6, 1e-3
 
 
-def _logit_guess(mu: float, gamma: float) -> tuple[float, float]:
-    """logit(c) from the table, else the second-order law, kept below the largest stick radius; and the
-    first secant step that suits the guess."""
-    found = table_given_mu(mu, gamma, quantities=())  # nan outside the table (or without it)
+def _logit_guess(mu: float, gamma: float, found: TableValues | None = None) -> tuple[float, float]:
+    """logit(c) from the table (``found``, if the caller has read it already), else the second-order law,
+    kept below the largest stick radius; and the first secant step that suits the guess."""
+    if found is None:
+        found = table_given_mu(mu, gamma, quantities=())  # nan outside the table (or without it)
     c, gap = float(found.c[0]), float(found.gap[0])
     if 0.0 < c < 1.0:
         return math.log(c) - math.log(gap), TABLE_STEP
@@ -238,11 +238,12 @@ def _theta_near_c_max(gap: float, gamma: float, res: Resolution, tol: float = 1e
     return math.atan2(1.0, e1)
 
 
-def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, c_guess: float | None = None
+def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found: TableValues | None = None
                    ) -> FlatPunchSolution:
-    """The stick radius for friction mu at ``level`` (secant in logit c at theta = atan(mu gamma))."""
+    """The stick radius for friction mu at ``level`` (secant in logit c at theta = atan(mu gamma)), started
+    from the table (``found``: its values at mu, if already read)."""
     theta = math.atan(mu * gamma)
-    start, step = _logit_guess(mu, gamma) if c_guess is None else (float(logit(c_guess)), LAW_STEP)
+    start, step = _logit_guess(mu, gamma, found)
     res: Resolution = RESOLUTIONS[level]
     fine = SingularField(solve_given_theta(theta, gamma, start, res, step=step))
     # the partner's c differs from the fine one's by the discretisation error (< 1e-6)
@@ -273,7 +274,7 @@ class SolverRoute:
     """
 
     def __init__(self, nu: float | None, gamma: float, c: float | None, mu: float | None, c_estimate: float,
-                 gap_estimate: float = 1.0):
+                 gap_estimate: float = 1.0, found: TableValues | None = None):
         self.reaches = c_estimate >= C_ASYMPTOTIC
         self.top = len(RESOLUTIONS) - 1
         self._value: Callable[[FlatPunchSolution], float]
@@ -284,7 +285,7 @@ class SolverRoute:
             self._solve = lambda level: nearly_adhesive(nu, gamma, mu, gap_estimate)
             self._value = lambda sol: sol.c
         else:
-            self._solve = lambda level: solve_given_mu(nu, mu, gamma, level)
+            self._solve = lambda level: solve_given_mu(nu, mu, gamma, level, found)
             self._value = lambda sol: sol.c
         self._results: list[FlatPunchSolution] = []
 

@@ -17,7 +17,9 @@ import numpy as np
 import pytest
 
 from numeric.core.charts import AT_C2, AT_ONE, PLAIN, SLIP_END, STICK_END, Resolution, layout
-from numeric.core.operators import AbelOperators
+from numeric.core.abel_rules import gauss01
+from numeric.core.charts import shifted_legendre
+from numeric.core.operators import EXTRA_NODES, AbelOperators, near_plain
 
 LAY = layout(0.6, 0.4, Resolution(degree=12, singular_degree=3, edge_singular_degree=1))
 
@@ -82,10 +84,10 @@ def _points(e: int) -> list[tuple[float, float]]:
         out += [(u_lo - L * t, t) for t in (1e-10, 0.5)] + [(u_hi + L * t, t) for t in (1e-10, 2.0)]
     elif kind == SLIP_END:
         out = [(A + L * s * s, 0.0) for s in (1e-4, 0.02, 0.5, 0.99)]
-        out += [(A - L * t, t) for t in (1e-12, 1e-5, 0.5)] + [(A + L * (1 + t), t) for t in (1e-10, 0.1)]
+        out += [(A - L * t, t) for t in (1e-12, 1e-5, 0.2, 0.5)] + [(A + L * (1 + t), t) for t in (1e-10, 0.1, 1.0, 1.5)]
     else:
         out = [(A - L * s * s, 0.0) for s in (1e-4, 0.02, 0.5, 0.99)]
-        out += [(A + L * t, t) for t in (1e-12, 1e-5)] + [(A - L * (1 + t), t) for t in (1e-10, 0.1)]
+        out += [(A + L * t, t) for t in (1e-12, 1e-5, 0.2, 0.5)] + [(A - L * (1 + t), t) for t in (1e-10, 0.1, 1.0, 1.5)]
     return [(v, t) for v, t in out if 0.0 < v < 1.0]
 
 
@@ -110,14 +112,32 @@ def _check(e: int, alpha: float) -> None:
     vs = np.array([v for v, _ in pts])
     anchor = np.array([AT_C2 if abs(v - LAY.c2) < abs(v - 1.0) else AT_ONE for v in vs])
     offset = vs - np.where(anchor == AT_C2, LAY.c2, 1.0)
-    mats = AbelOperators(LAY, (anchor, offset), elements=np.array([e])).matrices(alpha)[e]
+    mats = AbelOperators(LAY, (anchor, offset), elements=np.array([e])).matrices(alpha)
+    cols = slice(int(LAY.starts[e]), int(LAY.starts[e + 1]))
     K, m = int(LAY.degree[e]), int(LAY.n_basis[e])
     columns = [0, K] + ([K + 1, m - 1] if LAY.kind[e] != PLAIN else [])
     with mpmath.workdps(30):
         for upper in (True, False):
-            M = mats["upper" if upper else "lower"]
+            M = mats.of("upper" if upper else "lower")[:, cols]
             for i, (v, distance) in enumerate(pts):
                 tol = 1e-10 if 0.0 < distance < 1e-9 else 1e-12
                 for j in columns:
                     exact = float(_exact(e, j, mpmath.mpf(v), upper, alpha))
                     assert abs(M[i, j] - exact) <= tol * max(1.0, abs(exact)), (e, v, upper, j, M[i, j], exact)
+
+
+@pytest.mark.parametrize("degree", [6, 7, 8, 9, 11, 12, 14, 15, 17, 18])  # every level's degree and its partner's
+def test_plain_gauss_rule_resolves_the_kernel_beyond_the_near_distance(degree):
+    # at the distance where plain elements switch from the exact t-rule to plain Gauss points, the Gauss rule
+    # integrates P_k(2t - 1)/sqrt|u - v| to rounding on either side of the element: bound 3e-15 relative to the
+    # largest integral (the rounding of sums of degree-18 Legendre values is 1.7e-15, measured)
+    xq, wq = gauss01(degree + 1 + EXTRA_NODES)
+    P = shifted_legendre(degree, xq)
+    delta = near_plain(degree)
+    for kernel, kernel_mp in ((lambda t: 1 / np.sqrt(t + delta), lambda t: 1 / mpmath.sqrt(t + delta)),
+                              (lambda t: 1 / np.sqrt(1 + delta - t), lambda t: 1 / mpmath.sqrt(1 + delta - t))):
+        approx = (wq * kernel(xq)) @ P
+        with mpmath.workdps(30):
+            exact = np.array([float(mpmath.quad(lambda t: mpmath.legendre(j, 2 * t - 1) * kernel_mp(t), [0, 1]))
+                              for j in range(degree + 1)])
+        assert np.max(np.abs(approx - exact)) <= 3e-15 * np.max(np.abs(exact))

@@ -19,7 +19,10 @@ which the caller applies. Cases:
   the singular family at theta = 0, so that rule is graded toward 0.
 - sqrt chart, point outside: the kernel s / sqrt(s^2 + e^2) (before the singular end) or
   s / sqrt(s_v^2 - s^2) (beyond the far end) on one fixed node set graded toward both ends,
-  so the block is a matrix product.
+  so the block is a matrix product; points well away from the element (``FAR_BEFORE``,
+  ``FAR_BEYOND``) have the kernel interpolated at 32 Chebyshev points instead, and the
+  integrals of the Lagrange polynomials against the basis on the fixed nodes
+  (``outside_projector``) are formed once per element and exponent.
 
 The number of graded pieces and nodes was chosen by ``tests/test_abel_rules.py``: every rule
 agrees with a 30-digit mpmath quadrature to 1e-15 relative on the basis functions.
@@ -36,6 +39,7 @@ from numeric.core.charts import collocation_chart, shifted_legendre
 from numeric.core.quadrature import gauss_legendre, graded_rule
 
 __all__ = ["TOWARD", "AWAY", "WHOLE", "FAR_END", "sqrt_inside_rule", "sqrt_self_rule", "sqrt_outside_nodes", "sqrt_outside_kernel", "sqrt_near_outside_rule", "NEAR_OUTSIDE",
+           "FAR_BEFORE", "FAR_BEYOND", "INTERPOLATION_POINTS", "chebyshev_points01", "outside_projector",
            "plain_inside_rule", "plain_self_rule", "plain_outside_rule", "gauss01"]
 
 #: Graded rules (layers, ratio, extra, nmin, dn): toward the singular family (theta), toward the
@@ -97,6 +101,43 @@ def sqrt_outside_nodes(degree: int) -> tuple[np.ndarray, np.ndarray, np.ndarray,
 #: Points outside a sqrt-chart element closer than this (in s^2 from its singular end, or from
 #: its far end) get a rule of their own: the shared nodes resolve the kernel only down to here.
 NEAR_OUTSIDE = 1e-3
+
+
+#: Points outside a sqrt-chart element beyond its singular end by at least -FAR_BEFORE (in s^2), or beyond its far
+#: end with s_v^2 >= FAR_BEYOND, see a kernel s / sqrt|s^2 - s_v^2| (times the smooth 1/x) that INTERPOLATION_POINTS
+#: Chebyshev points in s resolve to rounding (interpolation error at the thresholds, measured: 8.7e-16 and 4.4e-16
+#: of the kernel's maximum; the singularities are at s = +-i 0.5 and s = 1.41). Their integrals are then
+#: kernel(Chebyshev points) @ ``outside_projector`` @ basis(outside nodes): INTERPOLATION_POINTS kernel values a
+#: point instead of one per outside node.
+FAR_BEFORE, FAR_BEYOND = -0.25, 2.0
+INTERPOLATION_POINTS = 32
+
+
+@lru_cache(maxsize=None)
+def chebyshev_points01(r: int = INTERPOLATION_POINTS) -> tuple[np.ndarray, np.ndarray]:
+    """Chebyshev points of the second kind on [0, 1] (both ends included) and 1 - s at them (exact)."""
+    k = np.arange(r)
+    s = 0.5 * (1.0 - np.cos(np.pi * k / (r - 1)))
+    one_minus = 0.5 * (1.0 + np.cos(np.pi * k / (r - 1)))
+    return s, one_minus
+
+
+@lru_cache(maxsize=None)
+def outside_projector(degree: int) -> np.ndarray:
+    """(r, q): row k is the outside nodes' weights times the Lagrange polynomial of Chebyshev point k at the
+    nodes (barycentric form), so that projector @ f(nodes) = int_0^1 l_k(s) f(s) ds by the outside rule."""
+    S, W, _, _ = sqrt_outside_nodes(degree)
+    xk, _ = chebyshev_points01()
+    r = xk.size
+    bary = np.where(np.arange(r) % 2 == 0, 1.0, -1.0)
+    bary[0] *= 0.5
+    bary[-1] *= 0.5
+    diff = S[:, None] - xk[None, :]
+    terms = bary[None, :] / diff  # no outside node is a Chebyshev point (graded Gauss nodes are irrational)
+    lagrange = terms / terms.sum(axis=1, keepdims=True)  # (q, r)
+    out = (W[:, None] * lagrange).T
+    out.setflags(write=False)
+    return out
 
 
 def sqrt_near_outside_rule(d: np.ndarray, degree: int) -> tuple[np.ndarray, np.ndarray]:

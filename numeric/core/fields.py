@@ -174,13 +174,7 @@ class SingularField:
             return out
         lay = self.layout
         xs = x[outer]
-        slip_elements = np.flatnonzero(lay.zone == SLIP)
-        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=slip_elements)
-        mats = ops.matrices(self.alpha, displacement=True)
-        coef = self._u_star_coefficients
-        ns = lay.n_stick
-        total = np.zeros(xs.size)
-        for e in slip_elements:
-            total += mats[e]["lower"] @ coef[lay.starts[e] - ns: lay.starts[e + 1] - ns]
+        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=np.flatnonzero(lay.zone == SLIP))
+        total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self._u_star_coefficients
         out[outer] = (2.0 / math.pi) * total / xs
         return out

@@ -9,7 +9,8 @@ Rows: (2.2a) with w* = 1 at every collocation point, then (2.2b) with u* = 0 at 
 points, so the matrix is D(theta) = [S | cos(theta) A + sin(theta)/gamma B].
 
 The Abel integrals (``numeric.core.abel_rules``) that do not depend on alpha (every plain
-element, the regular family of the elements touching c^2) are formed once per layout;
+element, the regular family of the elements touching c^2) are formed once per layout, all
+points and elements of a kind at once, into matrices over the whole basis (``AbelMatrices``);
 the families that carry alpha are contracted per alpha from cached nodes.
 
 The eigenvalue condition is phi(c-) = 0, phi = p - q/mu (2.11), the same as chi(c) = 0
@@ -32,26 +33,32 @@ from functools import lru_cache
 
 import numpy as np
 
-from numeric.core.abel_rules import (NEAR_OUTSIDE, gauss01, plain_inside_rule, plain_outside_rule, plain_self_rule,
-                         sqrt_inside_rule, sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
+from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, NEAR_OUTSIDE, chebyshev_points01, gauss01, outside_projector,
+                                     plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
+                                     sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, shifted_legendre)
 
-__all__ = ["AbelOperators", "CollocationSystem", "collocation_system", "normal_factor"]
+__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
 
 
-@dataclass(slots=True)
-class _Term:
-    """Rows ``rows`` of one operator block of a singular element: sum_q W[r, q] phi_j(S[.., q])."""
 
-    rows: np.ndarray | None
-    W: np.ndarray
-    S: np.ndarray
-    P: np.ndarray
-    shared: bool  # S, P are one node set (q,) for every row
-    regular: np.ndarray | None = None  # the alpha-free regular family, contracted once (elements at c)
+def near_plain(degree: int) -> float:
+    """Distance from a plain element, in element lengths, below which a point gets the exact rule in t = sqrt|u - v|.
+
+    Beyond it the degree + 1 + EXTRA_NODES Gauss points integrate P_k(u)/sqrt|u - v| to rounding: the kernel's
+    branch point at distance delta gives the Bernstein ellipse rho = (sqrt(delta) + sqrt(1 + delta))^2, and the
+    rule's error falls like rho^-(2 nq - degree); this distance puts that at e^-35 = 6e-16. Measured against
+    mpmath at the distance for degrees 6 ... 18 (``tests/test_abel_rules.py``): <= 2.1e-15 relative (1.7e-15 is the
+    rounding of the degree-18 sums at any distance).
+    """
+    rho = math.exp(35.0 / (2 * (degree + 1 + EXTRA_NODES) - degree))
+    return (0.5 * (math.sqrt(rho) - 1.0 / math.sqrt(rho))) ** 2
+
+NAMES = ("upper", "lower")
+"""The two Abel integrals: over u > v and over u < v (``numeric.core.abel_rules``)."""
 
 
 @lru_cache(maxsize=None)
@@ -60,141 +67,168 @@ def plain_legendre(nq: int, degree: int) -> np.ndarray:
     return shifted_legendre(degree, gauss01(nq)[0])
 
 
-def _factors(kind: int, S: np.ndarray, alpha: float, displacement: bool, cache: dict):
-    """family_factors at the nodes S, computed once per node set within one ``matrices`` call."""
-    key = ("f", id(S))
-    if key not in cache:
-        cache[key] = family_factors(kind, S, alpha, displacement)
-    return cache[key]
+def _weighted_sum(W: np.ndarray, P: np.ndarray) -> np.ndarray:
+    """sum_q W[i, q] P[i, q, j] for every row i (a batched product, BLAS)."""
+    return np.matmul(W[:, None, :], P)[:, 0, :]
 
 
-def _contract(kind: int, term: _Term, alpha: float, sdeg: int, cache: dict, displacement: bool = False) -> np.ndarray:
-    """sum_q W phi_j(S) for the basis of a singular element at exponent alpha."""
-    regular, singular = _factors(kind, term.S, alpha, displacement, cache)
-    if term.regular is not None and not displacement:  # element at c: only the singular family carries alpha
-        if term.shared:
-            key = ("h", id(term.S))
-            if key not in cache:
-                cache[key] = singular[:, None] * term.P[:, : sdeg + 1]
-            return np.concatenate([term.regular, term.W @ cache[key]], axis=1)
-        return np.concatenate([term.regular, np.einsum("iq,iqj->ij", term.W * singular, term.P[..., : sdeg + 1])], axis=1)
-    if term.shared:
-        key = ("b", id(term.S))
-        if key not in cache:
-            head = term.P if regular is None else regular[:, None] * term.P
-            cache[key] = np.concatenate([head, singular[:, None] * term.P[:, : sdeg + 1]], axis=1)
-        return term.W @ cache[key]
-    Wr = term.W if regular is None else term.W * regular
-    return np.concatenate([np.einsum("iq,iqj->ij", Wr, term.P),
-                           np.einsum("iq,iqj->ij", term.W * singular, term.P[..., : sdeg + 1])], axis=1)
+@dataclass(frozen=True, slots=True, eq=False)
+class AbelMatrices:
+    """The Abel integrals of every basis function (columns, in ``Layout.starts`` order) at the points (rows).
+
+    ``upper``/``lower``: int_{u > v} and int_{u < v} of phi(u) du / (2 sqrt|u - v|); ``upper_x``/``lower_x``:
+    the same of phi(u)/sqrt(u) (filled in the slip columns only, where q = R sin(theta)/gamma is not divided
+    by x); ``integral``, ``integral_x``: int phi du and int phi/sqrt(u) du over each element. Columns of
+    elements not asked for are 0.
+    """
+
+    upper: np.ndarray
+    lower: np.ndarray
+    upper_x: np.ndarray
+    lower_x: np.ndarray
+    integral: np.ndarray
+    integral_x: np.ndarray
+
+    def of(self, name: str) -> np.ndarray:
+        """The matrix or vector called ``name`` ("upper", "lower/x", "integral", ...)."""
+        return getattr(self, name.replace("/", "_"))
+
+
+@dataclass(frozen=True, slots=True)
+class _Term:
+    """Rows ``rows`` (None: the element integral) of one block of a singular element: sum_q W[r, q] phi_j(S[.., q]).
+
+    ``shared``: S and P are one node set (q,) for every row; with a ``projector`` (r, q), W is (rows, r) and the
+    block is W @ projector @ phi(S) (kernels interpolated at r Chebyshev points, ``abel_rules.outside_projector``)."""
+
+    rows: np.ndarray | None
+    W: np.ndarray
+    S: np.ndarray
+    P: np.ndarray
+    shared: bool
+    projector: np.ndarray | None = None
+
+    def contract(self, basis: np.ndarray) -> np.ndarray:
+        """The block for a basis tabulated on the shared nodes, basis (q, columns)."""
+        return self.W @ (basis if self.projector is None else self.projector @ basis)
+
+
+def _nodes_u(t: _Term, u_outside: np.ndarray, u_chebyshev: np.ndarray, anchor: float, scale: float) -> np.ndarray:
+    """u at the points where a term's weights sit: its own nodes, the shared outside nodes, or the Chebyshev points."""
+    if not t.shared:
+        return anchor + scale * t.S * t.S
+    return u_outside if t.projector is None else u_chebyshev
 
 
 class AbelOperators:
     """The Abel integrals of every basis function of a layout at given points.
 
-    For element e, ``matrices(alpha)[e]`` maps "upper", "lower" (and for slip elements
-    "upper/x", "lower/x": of phi/x) to (points, n_basis[e]) arrays and "integral" (and
-    "integral/x") to the (n_basis[e],) integrals over the element in u. Points default to the
-    collocation points (whose rules on their own element are cached); ``names`` and
-    ``elements`` restrict what is formed.
+    ``matrices(alpha)`` gives them as an ``AbelMatrices``. Points default to the collocation points (whose rules
+    on their own element are cached); ``names`` ("upper", "lower") and ``elements`` restrict what is formed.
+    What does not depend on alpha (every plain element, the regular family of the elements touching c^2) is
+    formed here, once per layout and point set; the families that carry alpha are kept as quadrature terms
+    (weights, nodes, Legendre values) and contracted per alpha.
     """
 
     def __init__(self, lay: Layout, points: tuple[np.ndarray, np.ndarray] | None = None,
-                 names: tuple[str, ...] = ("upper", "lower"), elements: np.ndarray | None = None) -> None:
+                 names: tuple[str, ...] = NAMES, elements: np.ndarray | None = None) -> None:
         self.layout = lay
         collocated = points is None
         anchor, offset = collocation(lay)[:2] if collocated else points
         self.x = np.sqrt(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)
-        self._fixed: dict[int, dict[str, np.ndarray]] = {}
+        N, nb = self.x.size, int(lay.starts[-1])
+        self.names = tuple(n for n in NAMES if n in names)
+        elements = np.arange(len(lay)) if elements is None else np.asarray(elements)
+        # A_e - v for every (point, element): offsets from the element's anchor
+        ae = lay.anchor[elements]
+        rel = np.where(anchor[:, None] == ae[None, :], 0.0, np.where(ae == AT_C2, -lay.w, lay.w)[None, :]) - offset[:, None]
+        owner = np.repeat(np.arange(len(lay)), lay.n_basis) if collocated else np.full(N, -1)
+        own = owner[:, None] == elements[None, :]
+        self._fixed = {key: np.zeros((N, nb)) for key in self.names + tuple(n + "/x" for n in self.names)}
+        self._fixed["integral"], self._fixed["integral/x"] = np.zeros(nb), np.zeros(nb)
+        is_plain = lay.kind[elements] == PLAIN
+        if np.any(is_plain):
+            self._plain(elements[is_plain], rel[:, is_plain], own[:, is_plain], collocated)
         self._terms: dict[int, dict[str, list[_Term]]] = {}
-        self.elements = np.arange(len(lay)) if elements is None else np.asarray(elements)
-        rel_all = {}
-        own_all = {}
-        for e in self.elements:
-            ae = lay.anchor[e]
-            rel_all[e] = np.where(anchor == ae, 0.0, lay.w if ae != AT_C2 else -lay.w) - offset  # A_e - v
-            own = np.zeros(self.x.size, bool)
-            if collocated:
-                own[lay.starts[e]: lay.starts[e + 1]] = True
-            own_all[e] = own
-        plain = [int(e) for e in self.elements if lay.kind[e] == PLAIN]
-        if plain:
-            self._fixed.update(self._plain(plain, np.stack([rel_all[e] for e in plain], axis=1),
-                                           np.stack([own_all[e] for e in plain], axis=1), names, collocated))
-        for e in self.elements:
-            if lay.kind[e] != PLAIN:
-                self._terms[e] = self._singular(e, rel_all[e], own_all[e], names)
+        for k in np.flatnonzero(~is_plain):
+            e = int(elements[k])
+            self._terms[e] = self._singular(e, rel[:, k], own[:, k])
+            if lay.kind[e] != EDGE:  # the regular family of the elements at c does not depend on alpha
+                cols = slice(int(lay.starts[e]), int(lay.starts[e]) + int(lay.degree[e]) + 1)
+                for key, terms in self._terms[e].items():
+                    target = self._fixed[key]
+                    for t in terms:
+                        block = t.contract(t.P) if t.shared else _weighted_sum(t.W, t.P)
+                        if t.rows is None:
+                            target[cols] = block[0]
+                        else:
+                            target[t.rows, cols] = block
 
-    def _plain(self, elements: list[int], rel: np.ndarray, own: np.ndarray, names, collocated: bool
-               ) -> dict[int, dict[str, np.ndarray]]:
-        """All plain elements at once (they share degree and rules): rel, own are (points, elements)."""
+    def _plain(self, E: np.ndarray, rel: np.ndarray, own: np.ndarray, collocated: bool) -> None:
+        """All plain elements E at once (they share degree and rules): rel, own are (points, elements)."""
         lay = self.layout
-        E = np.array(elements)
         deg = int(lay.degree[E[0]])
         m = deg + 1
-        nq = deg + 1 + EXTRA_NODES
+        nq = m + EXTRA_NODES
         N = self.x.size
         L = lay.hi[E] - lay.lo[E]
         lo = lay.lo[E]
         A = np.where(lay.anchor[E] == AT_C2, lay.c2, 1.0)
-        slip = lay.zone[E] == SLIP
         xq, wq = gauss01(nq)
         Pq = plain_legendre(nq, deg)
-        inv_x = 1.0 / np.sqrt(A[:, None] + lo[:, None] + L[:, None] * xq[None, :])  # (E, nq), used on slip elements
+        inv_x = 1.0 / np.sqrt(A[:, None] + lo[:, None] + L[:, None] * xq[None, :])  # (E, nq), the slip columns' 1/x
         d_lo, d_hi = rel + lo[None, :], rel + (lo + L)[None, :]
         inside = ~own & (d_lo <= 0.0) & (d_hi >= 0.0)
-        out: dict[int, dict[str, np.ndarray]] = {int(e): {} for e in E}
-        for upper in (True, False):
-            name = "upper" if upper else "lower"
-            if name not in names:
-                continue
+        cols = (lay.starts[E][:, None] + np.arange(m)[None, :]).ravel()
+        slip_cols = (lay.starts[E][lay.zone[E] == SLIP][:, None] + np.arange(m)[None, :]).ravel()
+        slip = lay.zone[E] == SLIP
+        slip_k = np.flatnonzero(slip)
+        for name in self.names:
+            upper = name == "upper"
             M = np.zeros((N, E.size, m))
             Mx = np.zeros((N, E.size, m))
             if collocated:  # own points: the same rule on every element, scaled by sqrt(L)
                 S, W, P = plain_self_rule(m, nq, upper, deg)
-                own_block = np.einsum("iq,iqj->ij", W, P)
-                u_own = A[:, None, None] + lo[:, None, None] + L[:, None, None] * S[None]  # (E, m, nq)
-                own_x = np.einsum("eiq,iqj->eij", W[None] / np.sqrt(u_own), P)
-                for k, e in enumerate(E):
-                    rows = slice(int(lay.starts[e]), int(lay.starts[e + 1]))
-                    M[rows, k] = math.sqrt(L[k]) * own_block
-                    Mx[rows, k] = math.sqrt(L[k]) * own_x[k]
+                u_own = (A + lo)[:, None, None] + L[:, None, None] * S[None]  # (E, m, nq)
+                rows = (lay.starts[E][:, None] + np.arange(m)[None, :]).ravel()
+                k_of_row = np.repeat(np.arange(E.size), m)
+                rL = np.sqrt(L)[:, None, None]
+                M[rows, k_of_row] = (rL * _weighted_sum(W, P)[None]).reshape(-1, m)
+                Mx[rows, k_of_row] = (rL * np.matmul((W[None] / np.sqrt(u_own))[:, :, None, :], P[None])[:, :, 0, :]
+                                      ).reshape(-1, m)
             side = ~own & ~inside & ((d_lo > 0.0) if upper else (d_hi < 0.0))
             distance = d_lo if upper else -d_hi
-            near = side & (distance < L[None, :])
-            pairs = np.nonzero(inside | near)
-            if pairs[0].size:
-                i, k = pairs
+            near = side & (distance < near_plain(deg) * L[None, :])
+            i, k = np.nonzero(inside | near)
+            if i.size:
                 in_pair = inside[i, k]
-                S = np.empty((i.size, nq)); W = np.empty((i.size, nq))
+                S = np.empty((i.size, nq))
+                W = np.empty((i.size, nq))
                 if np.any(in_pair):
                     Si, Wi = plain_inside_rule(np.clip(-d_lo[i, k][in_pair] / L[k][in_pair], 0.0, 1.0), nq, upper)
                     S[in_pair], W[in_pair] = Si, Wi * np.sqrt(L[k][in_pair])[:, None]
                 if np.any(~in_pair):
-                    So, Wo = plain_outside_rule(L[k][~in_pair], d_lo[i, k][~in_pair], d_hi[i, k][~in_pair], upper, nq)
-                    S[~in_pair], W[~in_pair] = So, Wo
+                    S[~in_pair], W[~in_pair] = plain_outside_rule(L[k][~in_pair], d_lo[i, k][~in_pair],
+                                                                  d_hi[i, k][~in_pair], upper, nq)
                 P = shifted_legendre(deg, S)
-                M[i, k] = np.einsum("iq,iqj->ij", W, P)
-                Mx[i, k] = np.einsum("iq,iqj->ij", W / np.sqrt(A[k][:, None] + lo[k][:, None] + L[k][:, None] * S), P)
-            far = side & ~near
-            if np.any(far):  # the kernel is smooth on the element: one Gauss rule (Bernstein rho >= 5.8)
-                diff = np.where(far[:, :, None], d_lo[:, :, None] + L[None, :, None] * xq[None, None, :], 1.0)
-                Kf = np.where(far[:, :, None], (0.5 * L[:, None] * wq[None, :])[None] / np.sqrt(np.abs(diff)), 0.0)
-                M += np.einsum("ieq,qj->iej", Kf, Pq)
-                Mx += np.einsum("ieq,qj->iej", Kf * inv_x[None], Pq)
-            for k, e in enumerate(E):
-                out[int(e)][name] = M[:, k]
-                if slip[k]:
-                    out[int(e)][name + "/x"] = Mx[:, k]
-        integral = L[:, None] * (wq @ Pq)[None, :]
-        integral_x = L[:, None] * ((wq[None, :] * inv_x) @ Pq)
-        for k, e in enumerate(E):
-            out[int(e)]["integral"] = integral[k]
-            if slip[k]:
-                out[int(e)]["integral/x"] = integral_x[k]
-        return out
+                M[i, k] = _weighted_sum(W, P)
+                Mx[i, k] = _weighted_sum(W / np.sqrt((A + lo)[k][:, None] + L[k][:, None] * S), P)
+            i, k = np.nonzero(side & ~near)
+            if i.size:  # the kernel is smooth on the element: one Gauss rule
+                Kf = (0.5 * L[k][:, None] * wq[None, :]) / np.sqrt(np.abs(d_lo[i, k][:, None] + L[k][:, None] * xq[None, :]))
+                M[i, k] = Kf @ Pq
+                on_slip = slip[k]
+                if np.any(on_slip):
+                    Mx[i[on_slip], k[on_slip]] = (Kf[on_slip] * inv_x[k[on_slip]]) @ Pq
+            self._fixed[name][:, cols] = M.reshape(N, -1)
+            if slip_k.size:
+                self._fixed[name + "/x"][:, slip_cols] = Mx[:, slip_k].reshape(N, -1)
+        self._fixed["integral"][cols] = (L[:, None] * (wq @ Pq)[None, :]).ravel()
+        if slip_k.size:
+            self._fixed["integral/x"][slip_cols] = (L[slip_k, None] * ((wq[None, :] * inv_x[slip_k]) @ Pq)).ravel()
 
-    def _singular(self, e: int, rel: np.ndarray, own: np.ndarray, names) -> dict[str, list[_Term]]:
+    def _singular(self, e: int, rel: np.ndarray, own: np.ndarray) -> dict[str, list[_Term]]:
+        """The quadrature terms of singular element e for every point, per name."""
         lay = self.layout
         L, m, deg = lay.length(e), int(lay.n_basis[e]), int(lay.degree[e])
         slip = lay.zone[e] == SLIP
@@ -204,60 +238,89 @@ class AbelOperators:
         d = -sign * rel / L  # s_v^2 of every point
         inside = ~own & (d > 0.0) & (d < 1.0)
         So, Wo, one_minus, Po = sqrt_outside_nodes(deg)
+        Sc, one_minus_c = chebyshev_points01()
+        projector = outside_projector(deg)
         u_o = A + sign * L * So * So
+        u_c = A + sign * L * Sc * Sc
         out: dict[str, list[_Term]] = {}
+        own_rows = np.flatnonzero(own)
         for away in (True, False):
             upper = away == (sign > 0.0)  # slip end: u > v is s > s_v
             name = "upper" if upper else "lower"
-            if name not in names:
+            if name not in self.names:
                 continue
             terms = []
-            if np.any(own):
+            if own_rows.size:
                 S, W, P = sqrt_self_rule(int(lay.kind[e]), m, away, deg)
-                terms.append(_Term(np.flatnonzero(own), rL * W, S, P, False))
+                terms.append(_Term(own_rows, rL * W, S, P, False))
             if np.any(inside):
                 S, W = sqrt_inside_rule(np.sqrt(d[inside]), away, deg)
                 terms.append(_Term(np.flatnonzero(inside), rL * W, S, shifted_legendre(deg, S), False))
             side = ~own & ~inside & ((d <= 0.0) if away else (d >= 1.0))
             near = side & ((-d < NEAR_OUTSIDE) if away else (d - 1.0 < NEAR_OUTSIDE))
-            rows = np.flatnonzero(side & ~near)
+            far = side & ((d <= FAR_BEFORE) if away else (d >= FAR_BEYOND))
+            rows = np.flatnonzero(side & ~near & ~far)
             if rows.size:
                 terms.append(_Term(rows, rL * Wo[None, :] * sqrt_outside_kernel(So, one_minus, d[rows]), So, Po, True))
+            rows = np.flatnonzero(far)
+            if rows.size:
+                terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows]), So, Po, True, projector))
             if np.any(near):
                 S, W = sqrt_near_outside_rule(d[near], deg)
                 terms.append(_Term(np.flatnonzero(near), rL * W, S, shifted_legendre(deg, S), False))
             out[name] = terms
             if slip:
-                out[name + "/x"] = [_Term(t.rows, t.W / np.sqrt(u_o if t.shared else A + sign * L * t.S * t.S), t.S, t.P,
-                                          t.shared) for t in terms]
+                out[name + "/x"] = [_Term(t.rows, t.W / np.sqrt(_nodes_u(t, u_o, u_c, A, sign * L)), t.S, t.P, t.shared,
+                                          t.projector) for t in terms]
         wi = 2.0 * L * So * Wo  # du = 2 L s ds
         out["integral"] = [_Term(None, wi[None, :], So, Po, True)]
         if slip:
             out["integral/x"] = [_Term(None, (wi / np.sqrt(u_o))[None, :], So, Po, True)]
-        if lay.kind[e] != EDGE:  # the regular family of the elements at c does not depend on alpha
-            for terms in out.values():
-                for t in terms:
-                    t.regular = t.W @ t.P if t.shared else np.einsum("iq,iqj->ij", t.W, t.P)
         return out
 
-    def matrices(self, alpha: float, displacement: bool = False) -> dict[int, dict[str, np.ndarray]]:
-        """Per element: name -> matrix; ``displacement`` uses the families of u* (``family_factors``)."""
+    def matrices(self, alpha: float, displacement: bool = False) -> AbelMatrices:
+        """The Abel integrals at basis exponent alpha; ``displacement`` uses the families of u* (``family_factors``)."""
         lay = self.layout
-        result = dict(self._fixed)
+        out = {key: value.copy() for key, value in self._fixed.items()}
         for e, blocks in self._terms.items():
-            cache: dict = {}
-            kind, sdeg, m = int(lay.kind[e]), int(lay.singular_degree[e]), int(lay.n_basis[e])
-            mats = {}
-            for name, terms in blocks.items():
-                if terms and terms[0].rows is None:
-                    mats[name] = _contract(kind, terms[0], alpha, sdeg, cache, displacement)[0]
-                    continue
-                M = np.zeros((self.x.size, m))
-                for term in terms:
-                    M[term.rows] = _contract(kind, term, alpha, sdeg, cache, displacement)
-                mats[name] = M
-            result[e] = mats
-        return result
+            kind, sdeg = int(lay.kind[e]), int(lay.singular_degree[e])
+            start, head = int(lay.starts[e]), int(lay.degree[e]) + 1
+            only_singular = kind != EDGE and not displacement  # the regular family is in the fixed part
+            cols = slice(start + head, int(lay.starts[e + 1])) if only_singular else slice(start, int(lay.starts[e + 1]))
+            factors: dict = {}  # family factors, tabulated and projected bases per node set
+            for key, terms in blocks.items():
+                target = out[key]
+                for t in terms:
+                    if id(t.S) not in factors:
+                        factors[id(t.S)] = family_factors(kind, t.S, alpha, displacement)
+                    regular, singular = factors[id(t.S)]
+                    if t.shared:
+                        key_basis = (id(t.S), "basis")
+                        if key_basis not in factors:
+                            basis = singular[:, None] * t.P[:, : sdeg + 1]
+                            if not only_singular:
+                                basis = np.concatenate([t.P if regular is None else regular[:, None] * t.P, basis], axis=1)
+                            factors[key_basis] = basis
+                        basis = factors[key_basis]
+                        if t.projector is not None:
+                            key_projected = (id(t.S), id(t.projector))
+                            if key_projected not in factors:
+                                factors[key_projected] = t.projector @ basis
+                            block = t.W @ factors[key_projected]
+                        else:
+                            block = t.W @ basis
+                    else:
+                        block = _weighted_sum(t.W * singular, t.P[..., : sdeg + 1])
+                        if not only_singular:
+                            block = np.concatenate([_weighted_sum(t.W if regular is None else t.W * regular, t.P), block],
+                                                   axis=1)
+                    if t.rows is None:
+                        target[cols] = block[0]
+                    else:
+                        target[t.rows, cols] = block
+        empty = np.zeros((self.x.size, 0))
+        return AbelMatrices(out.get("upper", empty), out.get("lower", empty), out.get("upper/x", empty),
+                            out.get("lower/x", empty), out["integral"], out["integral/x"])
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -330,38 +393,24 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     """Assemble [S75] (2.2a) at every point and (2.2b) at the stick points for basis exponent alpha."""
     lay = ops.layout
     x = ops.x
-    mats = ops.matrices(alpha)
+    M = ops.matrices(alpha)
     ns = lay.n_stick
     N = x.size
     nl = N - ns
     n = 2 * ns + nl
-    stick = np.zeros((n, 2 * ns))
+    xs, xl = x[:ns], x[ns:]
+    stick = np.empty((n, 2 * ns))
+    stick[:N, :ns] = M.upper[:, :ns]                                                          # (2.2a): int_x^1 t p
+    stick[:N, ns:] = -gamma * (0.5 * M.integral[None, :ns] - x[:, None] * M.lower[:, :ns])  # -gamma {int q - x int_0^x}
+    stick[N:, ns:] = xs[:, None] * M.upper[:ns, :ns]                                         # (2.2b): x int_x^1 q
+    stick[N:, :ns] = -gamma * M.lower[:ns, :ns]                                              # - gamma int_0^x t p
     normal = np.zeros((n, nl))
-    shear = np.zeros((n, nl))
+    normal[:N] = M.upper[:, ns:]
+    shear = np.empty((n, nl))
+    shear[:N] = -gamma * (0.5 * M.integral_x[None, ns:] - x[:, None] * M.lower_x[:, ns:])
+    shear[N:] = xs[:, None] * M.upper_x[:ns, ns:]
     us_stick = np.zeros((nl, 2 * ns))
-    us_normal = np.zeros((nl, nl))
-    us_shear = np.zeros((nl, nl))
-    xl = x[ns:]
-    integral = np.zeros(N)
-    xs = x[:ns]
-    for e in range(len(lay)):
-        M = mats[e]
-        cols = slice(int(lay.starts[e]), int(lay.starts[e + 1]))
-        integral[cols] = M["integral"] if "integral" in M else 0.0
-        if lay.zone[e] == STICK:
-            qcols = slice(ns + cols.start, ns + cols.stop)
-            stick[:N, cols] = M["upper"]                                                    # (2.2a): int_x^1 t p
-            stick[:N, qcols] = -gamma * (0.5 * M["integral"][None, :] - x[:, None] * M["lower"])  # -gamma {int q - x int_0^x}
-            stick[N:, qcols] = xs[:, None] * M["upper"][:ns]                                # (2.2b): x int_x^1 q
-            stick[N:, cols] = -gamma * M["lower"][:ns]                                      # - gamma int_0^x t p
-            us_stick[:, cols] = -gamma * M["lower"][ns:]  # (2.2b) at slip points: the stick q is below them
-        else:
-            lcols = slice(cols.start - ns, cols.stop - ns)
-            normal[:N, lcols] = M["upper"]
-            shear[:N, lcols] = -gamma * (0.5 * M["integral/x"][None, :] - x[:, None] * M["lower/x"])
-            shear[N:, lcols] = xs[:, None] * M["upper/x"][:ns]
-            us_normal[:, lcols] = -gamma * M["lower"][ns:]
-            us_shear[:, lcols] = xl[:, None] * M["upper/x"][ns:]
+    us_stick[:, :ns] = -gamma * M.lower[ns:, :ns]  # (2.2b) at slip points: the stick q is below them
     rhs = np.zeros(n)
     rhs[:N] = 1.0
     e = lay.stick_end
@@ -372,5 +421,5 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     end_row = np.zeros(ns)
     end_row[int(lay.starts[e]): int(lay.starts[e + 1])] = np.concatenate(
         [scale_regular * at_c, scale_singular * at_c[: sdeg + 1]])
-    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, end_row, integral, x, us_stick, us_normal,
-                             us_shear)
+    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, end_row, M.integral.copy(), x, us_stick,
+                             -gamma * M.lower[ns:, ns:], xl[:, None] * M.upper_x[ns:, ns:])

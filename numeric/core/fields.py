@@ -15,12 +15,12 @@ References
 from __future__ import annotations
 
 import math
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
 from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, basis_values,
-                                 chart_of_offset, collocation_chart)
+                                 chart_of_offset, collocation_chart, shifted_legendre)
 from numeric.core.eigenvalue import Eigensolution
 from numeric.core.operators import AbelOperators, normal_factor
 
@@ -34,6 +34,14 @@ def point_offsets(lay: Layout, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     anchor = np.where(to_one, AT_ONE, AT_C2)
     offset = np.where(to_one, -(1.0 - x) * (1.0 + x), (x - lay.c) * (x + lay.c))
     return anchor, offset
+
+
+@lru_cache(maxsize=None)
+def _collocation_legendre(kind: int, n: int, degree: int) -> np.ndarray:
+    """Shifted Legendre values at the n collocation points of an element of this kind, (n, degree + 1)."""
+    values = shifted_legendre(degree, collocation_chart(kind, n))
+    values.setflags(write=False)
+    return values
 
 
 class SingularField:
@@ -66,9 +74,10 @@ class SingularField:
         lay = self.layout
         c = lay.c
         k = 0.25 ** np.arange(1, 26)
-        ends = [np.sqrt(lay.anchor_value(e) + np.array([lay.lo[e], lay.hi[e]]) * (1 if lay.kind[e] in (PLAIN, SLIP_END) else -1))
-                for e in range(len(lay))]
-        points = np.concatenate(ends + [[0.0, c, 1.0], c * (1.0 - k), c + lay.gap * k, 1.0 - lay.gap * k])
+        sign = np.where((lay.kind == PLAIN) | (lay.kind == SLIP_END), 1.0, -1.0)
+        anchor = np.where(lay.anchor == AT_C2, lay.c2, 1.0)
+        ends = np.sqrt(np.clip(anchor[:, None] + sign[:, None] * np.stack([lay.lo, lay.hi], axis=1), 0.0, None)).ravel()
+        points = np.concatenate([ends, [0.0, c, 1.0], c * (1.0 - k), c + lay.gap * k, 1.0 - lay.gap * k])
         points = np.unique(np.clip(points, 0.0, 1.0))
         points.setflags(write=False)
         return points
@@ -82,26 +91,24 @@ class SingularField:
         lay = self.layout
         anchor, offset = point_offsets(lay, x)
         out = np.zeros(x.shape)
-        done = np.zeros(x.shape, bool)
+        if x.size == 0:
+            return out
+        elements = np.flatnonzero(lay.zone == zone)
+        ae = lay.anchor[elements]
+        off = offset[:, None] + np.where(anchor[:, None] == ae[None, :], 0.0,
+                                         np.where(ae == AT_C2, lay.w, -lay.w)[None, :])  # offsets from each A_e
+        kind = lay.kind[elements]
+        lo = np.where(kind == PLAIN, lay.lo[elements], np.where(kind == SLIP_END, 0.0, -lay.hi[elements]))
+        hi = np.where(kind == PLAIN, lay.hi[elements], np.where(kind == SLIP_END, lay.hi[elements], 0.0))
+        which = np.argmax((off >= lo[None, :]) & (off <= hi[None, :]), axis=1)  # the first element holding the point
         base = 0 if zone == STICK else lay.n_stick
-        for e in np.flatnonzero(lay.zone == zone):
-            ae = lay.anchor[e]
-            off_e = np.where(anchor == ae, offset, offset + (lay.w if ae == AT_C2 else -lay.w))  # offset from A_e
-            if lay.kind[e] == PLAIN:
-                lo, hi = lay.lo[e], lay.hi[e]
-            elif lay.kind[e] == SLIP_END:
-                lo, hi = 0.0, lay.hi[e]
-            else:  # stick end, edge: u = A - L s^2
-                lo, hi = -lay.hi[e], 0.0
-            inside = ~done & (off_e >= lo) & (off_e <= hi)
-            if not np.any(inside):
-                continue
-            s = chart_of_offset(lay, e, off_e[inside])
+        for k in np.unique(which):
+            e = int(elements[k])
+            rows = np.flatnonzero(which == k)
+            s = chart_of_offset(lay, e, off[rows, k])
             if lay.kind[e] == SLIP_END or lay.kind[e] == STICK_END:
                 s = self._off_the_layer(e, s)
-            coef = coefficients[lay.starts[e] - base: lay.starts[e + 1] - base]
-            out[inside] = basis_values(lay, e, s, self.alpha) @ coef
-            done |= inside
+            out[rows] = basis_values(lay, e, s, self.alpha) @ coefficients[lay.starts[e] - base: lay.starts[e + 1] - base]
         return out
 
     def _off_the_layer(self, e: int, s: np.ndarray) -> np.ndarray:
@@ -159,9 +166,17 @@ class SingularField:
         values = sys.u_star(self.theta, self.solution.coefficients)
         ns = lay.n_stick
         out = np.empty(values.size)
-        for e in np.flatnonzero(lay.zone == SLIP):
+        slip = np.flatnonzero(lay.zone == SLIP)
+        plain = slip[lay.kind[slip] == PLAIN]
+        if plain.size:  # one interpolation matrix for every plain element (Legendre values at the Gauss points)
+            m = int(lay.n_basis[plain[0]])
+            rows = (lay.starts[plain][:, None] - ns + np.arange(m)[None, :])
+            out[rows] = np.linalg.solve(_collocation_legendre(PLAIN, m, int(lay.degree[plain[0]])), values[rows].T).T
+        for e in slip[lay.kind[slip] != PLAIN]:
+            kind, m = int(lay.kind[e]), int(lay.n_basis[e])
             rows = slice(int(lay.starts[e]) - ns, int(lay.starts[e + 1]) - ns)
-            B = basis_values(lay, e, collocation_chart(int(lay.kind[e]), int(lay.n_basis[e])), self.alpha, displacement=True)
+            B = basis_values(lay, e, collocation_chart(kind, m), self.alpha,
+                             legendre=_collocation_legendre(kind, m, int(lay.degree[e])), displacement=True)
             out[rows] = np.linalg.solve(B, values[rows])
         return out
 

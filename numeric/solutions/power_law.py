@@ -78,6 +78,7 @@ from numeric.core.graded_mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
                                      split_geometric)
 from numeric.solutions.flat_punch import flat_punch
+from numeric.solutions.limits import closed_form
 from numeric.solutions.solution import FlatPunchSolution
 from numeric.solutions.solver import LEVEL_TYPICAL_ERROR
 
@@ -429,6 +430,24 @@ def _a_star(prepared: _Flat, n: float) -> float:
     return 1.0 + prepared.gamma * integral
 
 
+#: Below this 1 - c the stick-slip layer next to x = 1 is thinner than the composite rule in x resolves (its nodes are
+#: doubles near 1, spaced 1.1e-16). Measured for the sphere at gamma = 0.05, 0.124, 0.17: A - A_adhesive falls like
+#: (1 - c)^0.9 (-1.1e-11 ... -2.5e-10 at 1 - c = 1e-9) and C - C_adhesive like -(0.013 ... 0.046)(1 - c), while the
+#: computed C leaves that trend by 1e-11 at 1 - c = 1e-10, 3e-11 at 1e-11, 2e-10 at 3e-12 and 2e-8 at 1e-13
+#: (A by 3e-12, 2e-11, 2e-9 at 1e-11, 3e-12, 1e-13). Below it A and C are the adhesive solution's (App. B, c = 1),
+#: within 1e-12 of the frictional ones there.
+ADHESIVE_CONSTANTS_GAP = 1e-11
+
+
+def _for_constants(flat: FlatStresses) -> FlatStresses:
+    """The flat solution A and C are computed from: ``flat``, or the adhesive one where 1 - c < ADHESIVE_CONSTANTS_GAP."""
+    gap = float(getattr(flat, "gap", 1.0 - float(flat.c)))
+    if 0.0 < gap < ADHESIVE_CONSTANTS_GAP and float(flat.gamma) > 0.0:
+        return closed_form(None, float(flat.gamma), math.inf, 1.0, True,
+                           f"adhesive: 1 - c = {gap:.3g} is below what the constants' quadrature resolves")
+    return flat
+
+
 def indentation_constant(flat: FlatStresses, n: float) -> float:
     """Indentation constant A, delta = A a^n / b^(n-1), [S75] (3.2), (3.5).
 
@@ -445,7 +464,7 @@ def indentation_constant(flat: FlatStresses, n: float) -> float:
         Exponent of the indenter shape, n > 0.
     """
     n = check_n(n)
-    return float(special.beta(0.5 * n, 0.5) / (2.0 * _a_star(_Flat(flat), n)))  # (3.5)
+    return float(special.beta(0.5 * n, 0.5) / (2.0 * _a_star(_Flat(_for_constants(flat)), n)))  # (3.5)
 
 
 def indentation_constant_316(flat: FlatStresses, n: float) -> float:
@@ -491,10 +510,10 @@ def displacement_constant(flat: FlatStresses, n: float, *, x: float | None = Non
         Point of the stick zone, 0 < x < c; default c/2.
     """
     n = check_n(n)
-    prepared = _Flat(flat)
-    c = prepared.c
-    if not c > 0.0:
+    if not float(flat.c) > 0.0:
         raise ValueError("flat.c must be > 0: C is defined on the stick zone 0 < x < c")
+    prepared = _Flat(_for_constants(flat))
+    c = prepared.c
     x = 0.5 * c if x is None else float(x)
     if not 0.0 < x < c or x >= prepared.x_e:
         raise ValueError(f"x must lie in the stick zone (0, c) = (0, {c!r}), got {x!r}")

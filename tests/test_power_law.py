@@ -270,3 +270,23 @@ def test_bad_inputs_raise():
 
     with pytest.raises(ValueError, match="breakpoints"):
         pl.indentation_constant(Broken(), 2)
+
+
+def test_constants_next_to_full_stick_are_the_adhesive_ones():
+    # below 1 - c = 1e-11 the composite rule in x cannot resolve the stick-slip layer, and A, C come from the adhesive
+    # solution (App. B): equal to its closed forms (4.18) to the quadrature's 1e-14; above, the frictional constants
+    # approach them like -(1 - c)^0.9 (A) and -0.03 (1 - c) (C, measured at gamma = 0.124), so at 1 - c = 1e-9 they
+    # differ by 1e-10 and 4e-11: less than 1e-9, and more than zero (the quadrature resolves them there)
+    from asymptotics.adhesive import sphere_A_adhesive, sphere_C_adhesive
+    from numeric.solutions.power_law import ADHESIVE_CONSTANTS_GAP, displacement_constant, indentation_constant
+    from numeric.solutions.solver import solve_given_c
+
+    gamma = 0.124
+    A_ad, C_ad = float(sphere_A_adhesive(gamma)), float(sphere_C_adhesive(gamma))
+    for gap in (0.5 * ADHESIVE_CONSTANTS_GAP, 1e-13):
+        flat = solve_given_c(None, 1.0 - gap, gamma, 2, gap=gap)
+        assert indentation_constant(flat, 2.0) == pytest.approx(A_ad, rel=1e-14)
+        assert displacement_constant(flat, 2.0) == pytest.approx(C_ad, rel=1e-13)
+    flat = solve_given_c(None, 1.0 - 1e-9, gamma, 2, gap=1e-9)
+    assert 1e-12 < abs(indentation_constant(flat, 2.0) - A_ad) < 1e-9
+    assert 1e-12 < abs(displacement_constant(flat, 2.0) - C_ad) < 1e-9

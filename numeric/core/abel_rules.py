@@ -151,8 +151,8 @@ def sqrt_near_outside_rule(d: np.ndarray, degree: int) -> tuple[np.ndarray, np.n
     """
     before = d <= 0.0
     x, wx = _graded(NEAR, degree)
-    S = np.empty((d.size, x.size))
-    W = np.empty((d.size, x.size))
+    S = np.zeros((d.size, x.size))  # rows beyond the far end are overwritten below, and their spare columns must
+    W = np.zeros((d.size, x.size))  # hold nodes (zeros), not leftover memory: a weight 0 times a NaN node is NaN
     if np.any(before):
         e = np.sqrt(-d[before])
         top = np.sqrt(1.0 - d[before])

@@ -1,14 +1,16 @@
 """Build the whole-plane tables of ``numeric.core.table`` (writes ``numeric/core/table_data.py``).
 
 Samples level-3 solutions (``numeric.solutions.solver``, ~1e-13) with the sphere's and cone's A
-and C (``numeric.solutions.power_law``) at Chebyshev points of the first kind in the three regions
-S, N, L0 and L1 of ``numeric.core.table`` (each piece of each),, turns the stored functions into Chebyshev coefficients, and
-checks the interpolants at held-out random points of each region against fresh level-3 solutions,
-both ways (mu for given c, c for given mu). The worst error of each quantity is recorded in the
-generated module (``ERRORS``: relative for mu, c (region S) and 1 - c (``gap``, regions N, L0, L1);
-relative to max(1, |value|) for P*, p(0), A and C) and checked by ``tests/test_tables.py``.
+and C (``numeric.solutions.power_law``) at Chebyshev points of the first kind on every piece of
+the regions of ``numeric.core.table`` (``REGION_SPECS``: S, N and the bands L0, L1, L2 near the
+largest stick radius), turns the stored functions into Chebyshev coefficients, and checks the
+interpolants at held-out random points of each region and at its corners and edge midpoints
+against fresh level-3 solves, both ways (mu for given c, c for given mu). The worst error of each
+quantity is recorded in the generated module (``ERRORS``: relative for mu, c (region S) and 1 - c
+(``gap``, regions N and L); relative to max(1, |value|) for P*, p(0), A and C) and checked by
+``tests/test_tables.py``.
 
-Run time: about 30 minutes on 2 cores (two processes; single-threaded BLAS, or the threads of the
+Run time: about 15 minutes on 2 cores (two processes; single-threaded BLAS, or the threads of the
 two processes fight over the cores):
 
     OPENBLAS_NUM_THREADS=1 python derivations/build_tables.py [--quick]
@@ -31,14 +33,24 @@ from numeric.solutions.power_law import displacement_constant, indentation_const
 from numeric.solutions.solver import solve_given_c
 
 ROOT = Path(__file__).resolve().parents[1]
-C_MIN, C_BOX, GAP_MIN, GAMMA_L, GAMMA_SPLIT, GAMMA_MAX = 1e-5, 0.9, 1e-13, 0.1, 0.3, 0.75
+C_MIN, GAP_MIN, GAP_BOX, GAP_BOX_RISE, GAMMA_MAX = 1e-5, 1e-13, 0.1, 0.2, 0.75
+#: name -> (coordinate, gamma band, gamma^2 coordinate, piece breakpoints in x); see numeric.core.table. Pieces:
+#: S and N four each (log mu is singular at c_max beyond S's top, at 1 - c = 2 beyond N's); L0 eight, so
+#: that each piece is at most ~6 wide in w at gamma = 0.1 (W = 46 there; mu has poles at w = +-2 pi i).
+REGION_SPECS = {
+    "S": ("logit_c", (0.0, GAMMA_MAX), True, (-1.0, -0.5, 0.0, 0.5, 1.0)),
+    "N": ("log_gap", (0.0, 0.1), True, (-1.0, -0.5, 0.0, 0.5, 1.0)),
+    "L0": ("log_gap_ratio", (0.1, 0.3), False, tuple(np.linspace(-1.0, 1.0, 9))),
+    "L1": ("log_gap_ratio", (0.3, 0.5), False, (-1.0, -0.5, 0.0, 1.0)),
+    "L2": ("log_gap_ratio", (0.5, GAMMA_MAX), False, (-1.0, 0.0, 1.0)),
+}
 #: Chebyshev points (x, gamma) of each piece of a region
-SIZES = {"S": (32, 24), "N": (32, 16), "L0": (24, 24), "L1": (24, 20)}
-QUICK = {"S": (8, 5), "N": (8, 5), "L0": (6, 5), "L1": (6, 5)}
-N_CHECK = {"S": 40, "N": 24, "L0": 24, "L1": 24}
+SIZES = {"S": (28, 24), "N": (28, 16), "L0": (24, 24), "L1": (24, 20), "L2": (24, 20)}
+QUICK = {"S": (6, 5), "N": (6, 4), "L0": (5, 4), "L1": (5, 4), "L2": (5, 4)}
+N_CHECK = {"S": 48, "N": 24, "L0": 32, "L1": 24, "L2": 24}
 LEVEL = 3
-REGIONS = table.make_regions(GAMMA_L, GAMMA_SPLIT, GAMMA_MAX)
-CONSTANTS = (C_MIN, C_BOX, GAP_MIN)
+REGIONS = table.regions(REGION_SPECS)
+CONSTANTS = table.Constants(C_MIN, GAP_MIN, GAP_BOX, GAP_BOX_RISE, GAMMA_MAX)
 
 
 def chebyshev_points(n: int) -> np.ndarray:
@@ -62,7 +74,7 @@ def gamma_at(region: table.Region, y: np.ndarray) -> np.ndarray:
 
 
 def u_at(region: table.Region, x: float, gamma: float) -> float:
-    lo, hi = table.u_range(region, np.array(gamma), *CONSTANTS)
+    lo, hi = table.u_range(region, np.array(gamma), CONSTANTS)
     return float(lo + 0.5 * (x + 1.0) * (hi - lo))
 
 
@@ -95,7 +107,7 @@ def sample(point: tuple[str, float, float], theta_guess: float | None = None) ->
 
 
 def sample_row(points: list[tuple[str, float, float]]) -> list[dict[str, float]]:
-    """``sample`` along one gamma of a region near c_max, from c = C_BOX towards c_max (points in order of
+    """``sample`` along one gamma of a region near c_max, from the box edge towards c_max (points in order of
     decreasing 1 - c), each solve started from the previous ones: 1/(mu gamma) extrapolated linearly in
     1 - c (it falls like (1 - c) - (1 - c_max) near c_max). Without it the solver falls back to a secant
     search that takes 10-30 s a point at 1 - c_max < 1e-15."""
@@ -146,7 +158,7 @@ def main() -> None:
     rng = np.random.default_rng(20261125)
     coefs = {}
     with ProcessPoolExecutor(max_workers=2) as pool:
-        for name in table.REGIONS:
+        for name in REGIONS:
             coefs[name] = build_region(pool, name, sizes[name])
             solves = np.prod(sizes[name]) * (len(REGIONS[name].pieces) - 1)
             print(f"region {name}: {solves} solves, {time.perf_counter() - t0:.0f} s", file=sys.stderr)
@@ -163,8 +175,7 @@ def recheck(path: Path) -> None:
     spec = importlib.util.spec_from_file_location("built_table_data", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    coefs = {name: {k: [np.array(piece) for piece in v] for k, v in module.COEFFICIENTS[name].items()}
-             for name in table.REGIONS}
+    coefs = table.coefficients_of(module)
     t0 = time.perf_counter()
     with ProcessPoolExecutor(max_workers=2) as pool:
         errors = check(pool, np.random.default_rng(20261125), path, N_CHECK)
@@ -172,8 +183,14 @@ def recheck(path: Path) -> None:
     print(f"errors: {errors}; {time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
 
-def check(pool, rng, path: Path, n_check: dict[str, int]) -> dict[str, float]:
-    """Worst errors of the written table at held-out random points (fresh level-3 solves)."""
+#: Below this stick radius the level-3 references carry the solver's round-off (an absolute ~2e-13 (2e-3/c) in mu,
+#: ``numeric.solutions.solver.SMALL_C_ROUNDING``): the errors above it are recorded apart, ``ERRORS_ABOVE_SMALL_C``.
+SMALL_C = 1e-3
+
+
+def check(pool, rng, path: Path, n_check: dict[str, int]) -> tuple[dict[str, float], dict[str, float]]:
+    """Worst errors of the written table at held-out random points (fresh level-3 solves): everywhere, and at
+    c >= SMALL_C."""
     import importlib.util
 
     spec = importlib.util.spec_from_file_location("fresh_table_data", path)
@@ -181,7 +198,7 @@ def check(pool, rng, path: Path, n_check: dict[str, int]) -> dict[str, float]:
     spec.loader.exec_module(module)
     table.use_table_data(module)
     points = []
-    for name in table.REGIONS:
+    for name in REGIONS:
         region = REGIONS[name]
         for _ in range(n_check[name]):
             g = float(gamma_at(region, rng.uniform(-1.0, 1.0)))
@@ -193,12 +210,16 @@ def check(pool, rng, path: Path, n_check: dict[str, int]) -> dict[str, float]:
                 g = float(gamma_at(region, y))
                 points.append((name, u_at(region, x, g), g))
     errors = {name: 0.0 for name in ("mu", "c", "gap") + table.QUANTITIES}
+    above = dict(errors)
     worst: dict[str, tuple] = {}
 
     def record(name: str, value: float, where: tuple) -> None:
-        if not value <= errors[name]:  # also a nan
-            errors[name] = value if math.isfinite(value) else math.inf
+        value = value if math.isfinite(value) else math.inf  # a nan counts as the worst
+        if not value <= errors[name]:
+            errors[name] = value
             worst[name] = where
+        if where[1] >= SMALL_C and not value <= above[name]:
+            above[name] = value
     for point, ref in zip(points, pool.map(sample, points)):
         name, _, g = point
         where = (name, ref["c"], ref["gap"], g)
@@ -213,27 +234,44 @@ def check(pool, rng, path: Path, n_check: dict[str, int]) -> dict[str, float]:
             record("gap", abs(back.gap[0] / ref["gap"] - 1.0), where)
     table.use_table_data(None)
     print(f"worst points: {worst}", file=sys.stderr)
-    return {k: float(f"{v:.3g}") for k, v in errors.items()}
+    return {k: float(f"{v:.3g}") for k, v in errors.items()}, {k: float(f"{v:.3g}") for k, v in above.items()}
 
 
-def write(path: Path, coefs: dict, errors: dict | None) -> None:
-    def matrix(a: np.ndarray) -> str:
-        return "[\n" + "".join(f"                {[float(v) for v in row]!r},\n" for row in a) + "            ]"
-
-    def pieces(p: list[np.ndarray]) -> str:
-        return "[\n" + "".join(f"            {matrix(a)},\n" for a in p) + "        ]"
-
-    lines = ['"""Whole-plane tables of numeric.core.table: generated by derivations/build_tables.py, do not edit."""', "",
-             f"C_MIN, C_BOX, GAP_MIN = {C_MIN!r}, {C_BOX!r}, {GAP_MIN!r}",
-             f"GAMMA_L, GAMMA_SPLIT, GAMMA_MAX = {GAMMA_L!r}, {GAMMA_SPLIT!r}, {GAMMA_MAX!r}",
-             f"LEVEL = {LEVEL}",
-             "#: worst errors at held-out points against fresh level-3 solves: relative for mu, c (region S) and",
-             "#: 1 - c (gap, regions N, L0, L1); relative to max(1, |value|) for P*, p(0), A and C",
-             "ERRORS = " + repr(errors).replace("inf", "float('inf')"),  # an unusable quantity stays visible
-             "COEFFICIENTS = {"]
+def write(path: Path, coefs: dict, errors: tuple[dict, dict] | None) -> None:
+    """The generated module at ``path`` (constants, regions, errors and where each series lies) and its coefficients,
+    one float64 array in ``path`` with suffix .npy (a Python source of 80 000 floats took 1.3 s to compile on first
+    use; the array loads in a millisecond). Both are deterministic: no timestamps."""
+    layout, arrays, offset = {}, [], 0
     for name, region_coefs in coefs.items():
+        layout[name] = {}
+        for key, pieces in region_coefs.items():
+            spans = []
+            for a in pieces:
+                a = np.asarray(a, dtype=float)
+                spans.append((offset, a.shape[0], a.shape[1]))
+                arrays.append(a.ravel())
+                offset += a.size
+            layout[name][key] = spans
+    np.save(path.with_suffix(".npy"), np.concatenate(arrays), allow_pickle=False)
+    lines = ['"""Whole-plane tables of numeric.core.table: generated by derivations/build_tables.py, do not edit.', "",
+             f"The coefficients are in {path.with_suffix('.npy').name} beside this module (``SERIES`` says where).", '"""', "",
+             f"C_MIN, GAP_MIN, GAP_BOX, GAP_BOX_RISE, GAMMA_MAX = {C_MIN!r}, {GAP_MIN!r}, {GAP_BOX!r}, {GAP_BOX_RISE!r}, "
+             f"{GAMMA_MAX!r}",
+             f"LEVEL = {LEVEL}",
+             "#: name -> (coordinate, gamma band, gamma^2 coordinate, piece breakpoints in x)",
+             "REGIONS = {" + ", ".join(f"{k!r}: ({c!r}, {tuple(b)!r}, {sq!r}, {tuple(float(v) for v in p)!r})"
+                                      for k, (c, b, sq, p) in REGION_SPECS.items()) + "}",
+             "#: worst errors at held-out points against fresh level-3 solves: relative for mu, c (region S) and",
+             "#: 1 - c (gap, regions N and L); relative to max(1, |value|) for P*, p(0), A and C; everywhere, and at",
+             f"#: c >= {SMALL_C:g} (below, the references carry the solver's round-off)",
+             # an unusable quantity stays visible
+             "ERRORS = " + repr(None if errors is None else errors[0]).replace("inf", "float('inf')"),
+             "ERRORS_ABOVE_SMALL_C = " + repr(None if errors is None else errors[1]).replace("inf", "float('inf')"),
+             "#: region -> stored function -> per piece (offset, nx, ny) of its Chebyshev coefficients in the array",
+             "SERIES = {"]
+    for name, keys in layout.items():
         lines.append(f"    {name!r}: {{")
-        lines += [f"        {k!r}: {pieces(p)}," for k, p in region_coefs.items()]
+        lines += [f"        {k!r}: {spans!r}," for k, spans in keys.items()]
         lines.append("    },")
     lines += ["}", ""]
     path.write_text("\n".join(lines), encoding="utf-8")

@@ -167,9 +167,9 @@ def test_power_law_has_the_flat_punch_stick_radius(nu, fraction):
 
 
 def _round_trip_table(nu: float, fraction: float) -> None:
-    # from just above C_MIN (at C_MIN a rounding below hands over to the law) to C_BOX; nu = 1/2 (gamma = 0,
-    # mu = 0 for every c) has no round trip
-    c = 1.001 * table_data.C_MIN + fraction * (table_data.C_BOX - 1.001 * table_data.C_MIN)
+    # from just above C_MIN (at C_MIN a rounding below hands over to the law) to the box edge at small gamma,
+    # 1 - GAP_BOX (beyond, region N or L); nu = 1/2 (gamma = 0, mu = 0 for every c) has no round trip
+    c = 1.001 * table_data.C_MIN + fraction * (1.0 - table_data.GAP_BOX - 1.001 * table_data.C_MIN)
     back = stick_radius(friction_coefficient(c, nu), nu)
     # both directions read the same Chebyshev series; the inversion is Newton to 1e-15 in the unit
     # coordinate (numeric.core.table), about 1e-14 in logit c over the box, so c returns to ~1e-14

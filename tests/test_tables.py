@@ -32,17 +32,20 @@ MARGIN, SOLVER = 3.0, 2e-12
 SMALL_C_ROUNDOFF = 1e-8
 
 
-#: What README.md states for the tables (the build's record, rounded up): the issue asked for 1e-10; mu
-#: misses it by 7x (worst at the corner c = 0.9, gamma = 0.75), C by 100x at 1 - c = 7e-15, gamma = 0.141;
-#: c and 1 - c carry mu's error over d log mu / d log c, and p(0) at c = 1e-5 the solver's own round-off
-CLAIMS = {"mu": 1e-9, "c": 1e-8, "gap": 1e-8, "compliance": 2e-11, "central_pressure": 2e-8,
-          "sphere_A": 2e-9, "sphere_C": 2e-8, "cone_A": 1e-9, "cone_C": 1e-8}
+#: What README.md states for the tables (the build's record, rounded up). The issue asked for 1e-10: met at
+#: c >= 1e-3 by every quantity; between C_MIN = 1e-5 and 1e-3 the level-3 references themselves carry the solver's
+#: round-off (absolute ~2e-13 (2e-3/c) in mu, so 1e-9 relative at mu ~ 1e-3), which c carries over
+#: d log mu / d log c (~0.08 there), and p(0) and C likewise.
+CLAIMS = {"mu": 1e-9, "c": 1e-8, "gap": 1e-12, "compliance": 1e-11, "central_pressure": 2e-8,
+          "sphere_A": 1e-11, "sphere_C": 1e-8, "cone_A": 1e-11, "cone_C": 1e-9}
+CLAIMS_ABOVE_SMALL_C = 1e-10
 
 
 def test_recorded_errors_meet_the_stated_accuracy():
     # mu, c, 1 - c relative; the rest relative to max(1, |value|)
     for name in ("mu", "c", "gap") + QUANTITIES:
         assert data.ERRORS[name] <= CLAIMS[name], (name, data.ERRORS[name])
+        assert data.ERRORS_ABOVE_SMALL_C[name] <= CLAIMS_ABOVE_SMALL_C, (name, data.ERRORS_ABOVE_SMALL_C[name])
 
 
 def _check_quantities(tv, sol, extra: float = 0.0) -> None:
@@ -144,3 +147,15 @@ def test_build_script_runs(tmp_path):
     subprocess.run([sys.executable, str(ROOT / "derivations" / "build_tables.py"), "--quick", "--output", str(out)],
                    check=True)
     assert "COEFFICIENTS" in out.read_text(encoding="utf-8")
+
+
+@pytest.mark.slow
+def test_a_built_wheel_carries_the_table_coefficients(tmp_path):
+    # the coefficients live in numeric/core/table_data.npy, package data: a non-editable install must have them
+    import zipfile
+
+    subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path),
+                    str(ROOT)], check=True)
+    (wheel,) = tmp_path.glob("hertz_friction-*.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    assert "numeric/core/table_data.npy" in names and "numeric/core/table_data.py" in names

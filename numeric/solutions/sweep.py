@@ -25,8 +25,8 @@ from numpy.typing import ArrayLike
 
 from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
 
-from numeric.core.table import (table_available, table_errors, table_friction_coefficient, table_least_mu,
-                                table_stick_radius)
+from numeric.core.table import (table_available, table_errors, table_friction_coefficient, table_given_c,
+                                table_least_c, table_stick_radius)
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
 from numeric.solutions.law import LawRoute, law_stick_radius
 from numeric.solutions.solution import first_meeting
@@ -46,12 +46,20 @@ class Executor(Protocol):
 
 
 def _solved_c(mu: float, nu: float, level: int | None, rtol: float | None) -> float:
-    gamma = float(gamma_from_nu(nu))
-    if rtol is None and 0.0 < mu < table_least_mu(gamma):
-        # below the table's least c (C_MIN = 1e-5) flat_punch answers by the second-order law: its c directly,
-        # without the bracket and the P* it also computes
-        return law_stick_radius(mu, gamma, 2)
     return flat_punch(nu=nu, mu=mu, level=level, rtol=rtol).c
+
+
+def _below_table(kind: str, a: np.ndarray, g: np.ndarray, missing: np.ndarray) -> np.ndarray:
+    """Of the points ``missing``, those below the table's least stick radius (C_MIN = 1e-5), where flat_punch
+    answers by the second-order law: their c from the law directly, without the bracket and the P* it also
+    computes (nan elsewhere). The tables' least mu is read for all of them at once."""
+    out = np.full(missing.size, np.nan)
+    if kind != "c" or not missing.size or not table_available():
+        return out
+    least = table_given_c(np.full(missing.size, table_least_c()), g[missing], quantities=()).mu
+    for k in np.flatnonzero((a[missing] > 0.0) & (a[missing] < least)):
+        out[k] = law_stick_radius(float(a[missing[k]]), float(g[missing[k]]), 2)
+    return out
 
 
 def _solved_mu(c: float, nu: float, level: int | None, rtol: float | None) -> float:
@@ -97,6 +105,9 @@ def _sweep(name: str, kind: str, table, solve, first: ArrayLike, nu: ArrayLike, 
             values = np.where(table_meets(kind, values, rtol), values, np.nan)
         out[rest] = values
     missing = np.flatnonzero(np.isnan(out))
+    if rtol is None and use_table:
+        out[missing] = _below_table(kind, a, g, missing)
+        missing = np.flatnonzero(np.isnan(out))
     if missing.size:
         args = (a[missing], n[missing], [level] * missing.size, [rtol] * missing.size)
         results = executor.map(solve, *args) if executor is not None else map(solve, *args)

@@ -9,8 +9,14 @@ factorisation); the basis carries alpha = theta / pi of the previous step, and t
 loop stops when theta moves by less than 1e-9 relative (the computed theta changes by ~1e-9
 per unit change of the basis exponent, measured, so the last outer step changes nothing).
 
-Given theta (alpha known exactly): the secant method in xi = log(c / (1 - c)) on G, each step
-a new layout. theta = pi/2 is the limit mu -> inf: its root is the largest stick radius c_max.
+Given theta (alpha known exactly), from a close guess of c and of d theta / d xi (the tables'):
+given-c solves at xi = log(c / (1 - c)) stepped by (theta - theta(xi)) / slope, the slope then
+from the last two solves (``solve_given_theta_guided``); the tables' c is good to 1e-13 ... 1e-9, so
+the first solve, or the second, lands within rounding: a stick radius costs one or two given-c
+solves. Without a guess
+(or at theta = pi/2, the limit mu -> inf, whose root is the largest stick radius c_max and where
+theta(xi) does not exist beyond it): the secant method in xi on G, each step a new layout
+(``solve_given_theta``).
 
 References
 ----------
@@ -22,6 +28,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from scipy import optimize
@@ -31,7 +38,7 @@ from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
-__all__ = ["Eigensolution", "solve_given_c", "solve_given_theta"]
+__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "solve_given_c", "solve_given_theta", "solve_given_theta_guided"]
 
 HALF_PI = 0.5 * math.pi
 ALPHA_TOLERANCE = 1e-9
@@ -51,6 +58,13 @@ class Eigensolution:
         return self.system.layout
 
 
+@lru_cache(maxsize=4)
+def operators_at(c: float, gap: float, res: Resolution) -> AbelOperators:
+    """The Abel integrals of the layout for c = 1 - gap at resolution res: they depend on the discretisation only,
+    not on gamma or mu, so a sweep over nu at one c (the paper's tables) forms them once (the last few kept)."""
+    return AbelOperators(layout(c, gap, res))
+
+
 def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, max_steps: int = 30):
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
@@ -63,7 +77,8 @@ def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, m
         z = lu.solve(system.rhs)
         l = system.functional(theta)
         y = lu.solve_transposed(l)
-        dG = system.functional_derivative(theta) @ z - y @ (system.matrix_derivative(theta) @ z)
+        dD_z = system.derivative_times(theta, z)
+        dG = system.functional_derivative(theta) @ z - y @ dD_z
         step = (l @ z) / dG
         new = theta - step
         if new >= HALF_PI:  # beyond mu = inf: the root, if any, is at or below pi/2
@@ -74,7 +89,7 @@ def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, m
             new = 0.5 * theta
         size = abs(new - theta)
         if size <= 1e-9 * theta and previous == math.inf:  # first step from a close guess: the next is ~1e-18
-            dz = -lu.solve(system.matrix_derivative(theta) @ z)
+            dz = -lu.solve(dD_z)
             return new, z + (new - theta) * dz, size
         if size <= tol * theta or (size <= 1e-8 * theta and size >= 0.25 * previous):
             return new, z, size
@@ -129,7 +144,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
 
     Newton with the basis exponent from the guess (fast path); if it fails to converge,
     Brent's method on a bracket, then Newton again from its root."""
-    ops = AbelOperators(layout(c, gap, res))
+    ops = operators_at(c, gap, res)
     theta = theta_guess
     bracketed = False
     outer = 0
@@ -153,7 +168,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
 def _residual(c_logit: float, theta: float, gamma: float, res: Resolution):
     c = 1.0 / (1.0 + math.exp(-c_logit))
     gap = 1.0 / (1.0 + math.exp(c_logit))
-    system = collocation_system(AbelOperators(layout(c, gap, res)), gamma, theta / math.pi)
+    system = collocation_system(operators_at(c, gap, res), gamma, theta / math.pi)
     lu = EquilibratedLU(system.matrix(theta))
     z = lu.solve(system.rhs)
     return system.functional(theta) @ z, system, z
@@ -183,3 +198,48 @@ def solve_given_theta(theta: float, gamma: float, c_logit_guess: float, res: Res
             return Eigensolution(system, theta, z, size)
         previous = size
     raise SolverError(f"the secant iteration in c did not converge for theta = {theta}, gamma = {gamma}")
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class GuidedSolution:
+    """The last given-c solve of ``solve_given_theta_guided`` and d theta / d xi there (the caller's, or the
+    secant of the last two solves)."""
+
+    solution: Eigensolution
+    slope: float
+
+
+#: The guided iteration in logit c stops below this step (relative to max(1, |logit c|)).
+STEP_TOLERANCE = 1e-13
+
+
+def _logit_parts(xi: float) -> tuple[float, float]:
+    """c and 1 - c of xi = log(c / (1 - c)), each without cancellation."""
+    return 1.0 / (1.0 + math.exp(-xi)), 1.0 / (1.0 + math.exp(xi))
+
+
+def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, slope: float, res: Resolution,
+                             max_steps: int = 8) -> GuidedSolution:
+    """Stick radius for theta = atan(mu gamma) < pi/2 from a close guess c = 1 - gap and slope = d theta / d xi.
+
+    Given-c solves (Newton in theta at fixed c, the basis carrying alpha = theta / pi) at xi_k, stepped by
+    xi_{k+1} = xi_k + (theta - theta(xi_k)) / slope, the slope from the last two solves once there are two.
+    Stops when the next step would be below STEP_TOLERANCE in xi (c would move by less than 1e-13 relative, a
+    tenth of the levels' rounding floor, ``numeric.solutions.solver.ERROR_FLOOR``), or once steps below 1e-8
+    stop shrinking (the small jumps of theta(xi) where the layout changes, of the size of the discretisation
+    error). Raises SolverError if it does not settle.
+    """
+    xi = math.log(c) - math.log(gap)
+    previous: tuple[float, float] | None = None
+    last_step = math.inf
+    for _ in range(max_steps):
+        sol = solve_given_c(c, gap, gamma, theta, res)
+        if previous is not None and sol.theta != previous[1] and xi != previous[0]:
+            slope = (sol.theta - previous[1]) / (xi - previous[0])
+        step = (theta - sol.theta) / slope
+        if abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step):
+            return GuidedSolution(sol, slope)
+        previous, last_step = (xi, sol.theta), abs(step)
+        xi += step
+        c, gap = _logit_parts(xi)
+    raise SolverError(f"the stick radius for theta = {theta} did not settle from the guide (last step {step:.3g} in logit c)")

@@ -363,6 +363,11 @@ class CollocationSystem:
         out[:, 2 * ns:] = -math.sin(theta) * self.normal + (normal_factor(theta) / self.gamma) * self.shear
         return out
 
+    def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray:
+        """(d D / d theta) z, without forming the matrix."""
+        slip = z[2 * self.n_stick:]
+        return -math.sin(theta) * (self.normal @ slip) + (normal_factor(theta) / self.gamma) * (self.shear @ slip)
+
     def functional(self, theta: float) -> np.ndarray:
         """l with l . z = phi(c-) cos(theta) (times beta for beta <= 1/2): sin(theta)/gamma p(c-) - cos(theta) q(c-)."""
         ns = self.n_stick

@@ -191,7 +191,7 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
                                                              or solver.best_effort(rtol))
     # where the table reaches, its c and 1 - c (~1e-9) decide the route: the law's 1 - c misses the
     # saturation at c_max (at gamma = 0.13, mu = 2 it puts 1 - c at 1e-21, the table at 6.5e-12)
-    found = table_given_mu(mu, gamma, quantities=())
+    found = table_given_mu(mu, gamma, quantities=(), slopes=True)
     if math.isfinite(found.gap[0]):
         solver = SolverRoute(nu, gamma, None, mu, float(found.c[0]), float(found.gap[0]), found)
     elif mu < table_least_mu(gamma):  # c < C_MIN: below the solver's reach, whatever the law's estimate

@@ -26,11 +26,47 @@ from numpy.typing import ArrayLike
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_x
 
-__all__ = ["AccuracyWarning", "StressField", "FlatPunchSolution", "Offer", "first_meeting", "meets", "warn_unmet"]
+__all__ = ["AccuracyWarning", "DeferredError", "StressField", "FlatPunchSolution", "Offer", "first_meeting", "meets",
+           "warn_unmet"]
 
 
 class AccuracyWarning(UserWarning):
     """The requested ``rtol`` could not be met; the most accurate result available was returned."""
+
+
+class DeferredError:
+    """An error estimate formed on first use.
+
+    The solver's estimate is a second solve one polynomial degree lower (``numeric.solutions.solver``), as
+    costly as the solution itself: a caller who reads neither ``error`` nor asks for ``rtol`` does not pay
+    for it. The value, once formed, is kept.
+    """
+
+    __slots__ = ("_compute", "_value")
+
+    def __init__(self, compute: Callable[[], float]) -> None:
+        self._compute: Callable[[], float] | None = compute
+        self._value: float | None = None
+
+    def value(self) -> float:
+        if self._value is None:
+            assert self._compute is not None
+            self._value = float(self._compute())
+            self._compute = None
+        return self._value
+
+    def __repr__(self) -> str:
+        return "<formed on first use>" if self._value is None else repr(self._value)
+
+    def __reduce__(self):
+        """Pickled (to another process) with its value, formed now: the solve behind it does not travel."""
+        return (_known_error, (self.value(),))
+
+
+def _known_error(value: float) -> DeferredError:
+    known = DeferredError(lambda: value)
+    known.value()
+    return known
 
 
 class StressField(Protocol):
@@ -63,7 +99,8 @@ class FlatPunchSolution:
     compliance : float
         P* = (pi/2) int_0^1 x p dx (2.4); the load is P = 4 G a P* delta / (1 - nu).
     error : float
-        Estimated absolute error of c, mu and compliance (0 for closed forms).
+        Estimated absolute error of c, mu and compliance (0 for closed forms); on the solver route it is
+        formed when first read (a second solve one degree lower, ``DeferredError``).
     route : str
         "closed form (...)" or "solver level L, n unknowns".
     breakpoints : ndarray
@@ -79,10 +116,15 @@ class FlatPunchSolution:
     mu: float
     c: float
     compliance: float
-    error: float
+    _error: float | DeferredError
     route: str
     breakpoints: np.ndarray
     _field: StressField
+
+    @property
+    def error(self) -> float:
+        """Estimated absolute error of c, mu and compliance (formed on first use on the solver route)."""
+        return self._error.value() if isinstance(self._error, DeferredError) else self._error
 
     @property
     def gap(self) -> float:

@@ -7,12 +7,15 @@ level of the eigenvalue condition), a floor that grows like 1/c below c = 2e-3 (
 measured) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the level's
 c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against level 4 (``tests/test_singular_solver.py``,
 ``derivations/benchmark.md``) the true error lies below this estimate and within a factor 10
-of it.
+of it. The estimate is a second solve as costly as the first, so it is formed when first read
+(``numeric.solutions.solution.DeferredError``), or at once where rtol asks for it.
 
 Given c: Newton in theta = atan(mu gamma) from a guess (the Chebyshev table, else the
-second-order law). Given mu: the secant method in logit(c) from a guess (the table, else the
-law, or the largest stick radius when the law's c exceeds it); no bracket is needed near full
-stick, where mu -> inf is the regular limit theta -> pi/2. Below ``C_ASYMPTOTIC`` the solver is
+second-order law). Given mu: where the table reaches, given-c solves from its c, stepped in
+logit(c) by (theta - theta(c)) over its slope d theta / d logit c (one or two solves: the table's
+c is good to 1e-13 ... 1e-9, and a step from it lands within rounding); elsewhere the secant method in logit(c)
+from the law's guess (or the largest stick radius when the law's c exceeds it); no bracket is
+needed near full stick, where mu -> inf is the regular limit theta -> pi/2. Below ``C_ASYMPTOTIC`` the solver is
 not offered (the law is the answer, ``numeric.solutions.law``). Given mu, where the law puts
 1 - c below ``GAP_ADHESIVE`` (mu of order gamma log(1/gap)/pi at small gamma) the slip annulus
 is thinner than 1e-13 of the radius and P* and the stresses at 1 - x > 1e-12 differ from the
@@ -40,12 +43,12 @@ from asymptotics.second_order import C_MAX, correction_ratio, stick_radius_secon
 
 from numeric.core.charts import RESOLUTIONS, Resolution, partner
 from numeric.core.eigenvalue import solve_given_c as core_given_c
-from numeric.core.eigenvalue import solve_given_theta
+from numeric.core.eigenvalue import solve_given_theta, solve_given_theta_guided
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.fields import SingularField
 from numeric.core.table import TableValues, table_available, table_friction_coefficient, table_given_mu
 from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, closed_form, no_eigenvalue
-from numeric.solutions.solution import FlatPunchSolution, Offer, warn_unmet
+from numeric.solutions.solution import DeferredError, FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
            "NEAR_C_MAX", "ROUNDING_ULPS", "SMALL_C_ROUNDING", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
@@ -81,8 +84,8 @@ LEVEL_TYPICAL_ERROR = {0: 1e-8, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}
 LEVEL_SECONDS = {0: 0.008, 1: 0.010, 2: 0.016, 3: 0.025, 4: 0.04}
 
 
-def from_field(nu: float | None, field: SingularField, level: int, error: float, mu: float | None = None
-               ) -> FlatPunchSolution:
+def from_field(nu: float | None, field: SingularField, level: int, error: float | DeferredError,
+               mu: float | None = None) -> FlatPunchSolution:
     """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu)."""
     return FlatPunchSolution(
         nu=nu,
@@ -90,7 +93,7 @@ def from_field(nu: float | None, field: SingularField, level: int, error: float,
         mu=field.mu if mu is None else mu,
         c=field.c,
         compliance=field.compliance,
-        error=error,
+        _error=error,
         route=f"solver level {level}, {field.n_unknowns} unknowns",
         breakpoints=field.breakpoints,
         _field=field,
@@ -179,11 +182,15 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: flo
         fine = SingularField(core_given_c(c, gap, gamma, guess, res))
     except (SolverError, NoEigenvalueError):
         fine = SingularField(core_given_c(c, gap, gamma, _theta_near_c_max(gap, gamma, res), res))
-    coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
-    error = _error(fine, coarse, lambda f: f.mu)
-    if bias > 0.0:  # the level's c_max off the closed form by bias: mu off by up to mu bias / (excess - bias)
-        error = max(error, fine.mu * bias / (excess - bias))
-    return from_field(nu, fine, level, error)
+
+    def estimate() -> float:
+        coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
+        error = _error(fine, coarse, lambda f: f.mu)
+        if bias > 0.0:  # the level's c_max off the closed form by bias: mu off by up to mu bias / (excess - bias)
+            error = max(error, fine.mu * bias / (excess - bias))
+        return error
+
+    return from_field(nu, fine, level, DeferredError(estimate))
 
 
 def solve_limit(nu: float | None, gamma: float, level: int) -> tuple[FlatPunchSolution, float]:
@@ -240,16 +247,41 @@ def _theta_near_c_max(gap: float, gamma: float, res: Resolution, tol: float = 1e
 
 def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found: TableValues | None = None
                    ) -> FlatPunchSolution:
-    """The stick radius for friction mu at ``level`` (secant in logit c at theta = atan(mu gamma)), started
-    from the table (``found``: its values at mu, if already read)."""
+    """The stick radius for friction mu at ``level``, started from the table (``found``: its values at mu, if
+    already read).
+
+    Where the table reaches: one or two given-c solves (``numeric.core.eigenvalue.solve_given_theta_guided``) from its
+    c and d theta / d logit c; the error estimate is the partner resolution's theta at the same c, turned into
+    c by that slope (and P* by the table's d P* / d logit c). Elsewhere: the secant in logit c at
+    theta = atan(mu gamma) from the law's guess, the partner likewise."""
     theta = math.atan(mu * gamma)
-    start, step = _logit_guess(mu, gamma, found)
     res: Resolution = RESOLUTIONS[level]
+    if found is None:
+        found = table_given_mu(mu, gamma, quantities=(), slopes=True)
+    c, gap, log_slope = float(found.c[0]), float(found.gap[0]), float(found.log_mu_slope[0])
+    if 0.0 < c < 1.0 and math.isfinite(log_slope) and theta < HALF_PI:
+        guided = solve_given_theta_guided(theta, gamma, c, gap, math.sin(theta) * math.cos(theta) * log_slope, res)
+        fine = SingularField(guided.solution)
+        compliance_slope = abs(float(found.compliance_slope[0]))
+
+        def estimate() -> float:
+            coarse = SingularField(core_given_c(fine.c, fine.gap, gamma, fine.theta, partner(res)))
+            shift = abs(fine.theta - coarse.theta) / abs(guided.slope)  # the partner's logit c for this theta, less ours
+            scale = max(fine.c, fine.compliance)
+            return max(fine.c * fine.gap * shift, abs(fine.compliance - coarse.compliance) + compliance_slope * shift,
+                       rounding_floor(fine.c, scale))
+
+        return from_field(nu, fine, level, DeferredError(estimate), mu)
+    start, step = _logit_guess(mu, gamma, found)
     fine = SingularField(solve_given_theta(theta, gamma, start, res, step=step))
-    # the partner's c differs from the fine one's by the discretisation error (< 1e-6)
-    coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap),
-                                             partner(res), step=TABLE_STEP))
-    return from_field(nu, fine, level, _error(fine, coarse, lambda f: f.c), mu)
+
+    def estimate_secant() -> float:
+        # the partner's c differs from the fine one's by the discretisation error (< 1e-6)
+        coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap),
+                                                 partner(res), step=TABLE_STEP))
+        return _error(fine, coarse, lambda f: f.c)
+
+    return from_field(nu, fine, level, DeferredError(estimate_secant), mu)
 
 
 def nearly_adhesive(nu: float | None, gamma: float, mu: float, gap: float) -> FlatPunchSolution:
@@ -258,7 +290,7 @@ def nearly_adhesive(nu: float | None, gamma: float, mu: float, gap: float) -> Fl
     adhesive = float(compliance_adhesive(gamma))
     return FlatPunchSolution(
         nu=nu, gamma=gamma, mu=mu, c=1.0 - gap, compliance=adhesive,
-        error=max(gap, 0.3 * gap**0.87),
+        _error=max(gap, 0.3 * gap**0.87),
         route=f"adhesive stresses (App. B): the law puts 1 - c = {gap:.3g} < {GAP_ADHESIVE:g}, below what the "
               "stresses resolve",
         breakpoints=ADHESIVE_EDGE_BREAKPOINTS, _field=ClosedForm(gamma, True))

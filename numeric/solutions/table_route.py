@@ -105,7 +105,7 @@ class TableRoute:
         mu, c, gap = float(v.mu[0]), float(v.c[0]), float(v.gap[0])
         theta = 0.5 * math.pi if math.isinf(mu) else math.atan(mu * self.gamma)
         return FlatPunchSolution(
-            nu=self.nu, gamma=self.gamma, mu=mu, c=c, compliance=float(v.values["compliance"][0]), error=self.error(),
+            nu=self.nu, gamma=self.gamma, mu=mu, c=c, compliance=float(v.values["compliance"][0]), _error=self.error(),
             route=f"table (mu, c, P* to {self.error():.1g}) with level-0 stresses (to {FIELD_ERROR:g} of max(1, p)) "
                   "computed on first use",
             breakpoints=graded_breakpoints(c), _field=DeferredField(c, gap, self.gamma, theta))

@@ -112,7 +112,11 @@ def _side_by_side(bench: Benchmark) -> list[str]:
     lines = ["## Side by side with the paper's scheme at h = 0.01 (one run)", "",
              "Each task returns the full solution (mu or c, P*, and p, q, u at four points); times are medians per "
              "call, the ratio is to the paper's scheme at h = 0.01 (nu = 0.25, c = 0.5) timed in the same run, the "
-             "error the worst relative error of mu or 1 - c and of P* over the points.", "",
+             "error the worst relative error of mu or 1 - c and of P* over the points. The solver's error estimate "
+             "(a second solve one degree lower) is formed when first read: the rows 'with its error estimate' read "
+             "it, the others do not. Before each timed call the solver's cache of Abel integrals (kept per stick "
+             "radius and level, for sweeps over nu) is cleared, so that every call is a problem not solved before, "
+             "as the scheme's collocation matrix is cleared for it.", "",
              "| task | time, ms | ratio to the scheme | worst error | points | reference |", "|---|---|---|---|---|---|"]
     lines += [f"| {s.task} | {_ms(s.seconds)} | {s.ratio:.3g} | {_err(s.error)} | {s.points} | {s.reference} |"
               for s in bench.side_by_side]

@@ -367,7 +367,7 @@ def stick_radius_first_order(mu: ArrayLike, nu: float | None = None, *, gamma: f
     nu : float, optional
         Poisson's ratio; give exactly one of ``nu`` and ``gamma``.
     gamma : float, optional
-        Coupling constant (2.2), 0 <= gamma < 1.
+        Coupling constant (2.2), 0 <= gamma <= 3/4.
 
     Returns
     -------
@@ -650,7 +650,7 @@ def compliance_first_order(c: ArrayLike, gamma: float) -> np.ndarray | float:
     c : array_like
         Stick radius, 0 < c <= 1.
     gamma : float
-        Coupling constant, 0 <= gamma < 1.
+        Coupling constant, 0 <= gamma <= 3/4.
 
     Examples
     --------

@@ -3,7 +3,9 @@
 Nomenclature (used throughout both packages)
 --------------------------------------------
 nu     Poisson's ratio, in (-1, 1/2].
-gamma  (1 - 2 nu) / (2 - 2 nu), the coupling constant of (2.2); in [0, 3/4).
+gamma  (1 - 2 nu) / (2 - 2 nu), the coupling constant of (2.2); in [0, 3/4) for every material, and
+       |gamma_bar| < 3/4 for every pair (``gamma_dissimilar``); inputs may take the closed end 3/4,
+       the limit nu -> -1.
 kappa  (1/pi) log((1 + gamma)/(1 - gamma)), the oscillation index of the adhesive
        solution (4.10), (B1).
 mu     Coulomb friction coefficient, in [0, inf].
@@ -23,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 __all__ = [
+    "GAMMA_MAX",
     "gamma_from_nu",
     "gamma_dissimilar",
     "kappa_from_gamma",
@@ -34,6 +37,10 @@ __all__ = [
     "check_x",
     "resolve_gamma",
 ]
+
+
+GAMMA_MAX = 0.75
+"""gamma at nu = -1, the supremum of gamma_from_nu over (-1, 1/2] and of |gamma_dissimilar| over all pairs."""
 
 
 def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
@@ -57,14 +64,16 @@ def check_nu(nu: ArrayLike) -> np.ndarray:
 
 
 def check_gamma(gamma: ArrayLike) -> np.ndarray:
-    """Return ``gamma`` as a float array, raising ``ValueError`` unless 0 <= gamma < 1.
+    """Return ``gamma`` as a float array, raising ``ValueError`` unless 0 <= gamma <= 3/4.
 
-    Values in (3/4, 1) arise only for dissimilar bodies (``gamma_dissimilar``);
-    gamma = 1 makes kappa infinite and is excluded.
+    No material reaches gamma = 3/4: gamma_from_nu(nu) < 3/4 for nu > -1, and |gamma_bar| < 3/4 for
+    every pair of bodies (``gamma_dissimilar``). The closed end 3/4, the limit nu -> -1, is accepted:
+    the problem is regular there (kappa = (2/pi) atanh(3/4)), and the tables are built up to it.
     """
     arr = _finite_array(gamma, "gamma")
-    if np.any((arr < 0.0) | (arr >= 1.0)):
-        raise ValueError(f"gamma must lie in [0, 1), got {gamma!r}")
+    if np.any((arr < 0.0) | (arr > GAMMA_MAX)):
+        raise ValueError(f"gamma must lie in [0, 3/4] (no pair of materials with nu in (-1, 1/2] reaches |gamma| = 3/4), "
+                         f"got {gamma!r}")
     return arr
 
 
@@ -147,6 +156,10 @@ def gamma_dissimilar(G1: float, nu1: float, G2: float, nu2: float) -> float:
     The contact problem keeps its form with gamma replaced by |gamma_bar| (the sign only
     says which body's surface moves inward relative to the other). A rigid indenter is
     the limit G2 -> inf, where gamma_bar -> gamma_from_nu(nu1).
+
+    |gamma_bar| < 3/4 always: with t_i = 1/G_i >= 0, gamma_bar = (a1 t1 - a2 t2)/(b1 t1 + b2 t2) with
+    a_i = (1 - 2 nu_i)/2 >= 0 and b_i = 1 - nu_i > 0, so |gamma_bar| <= (a1 t1 + a2 t2)/(b1 t1 + b2 t2)
+    <= max_i a_i/b_i = max_i gamma_from_nu(nu_i) < 3/4.
 
     Parameters
     ----------

@@ -72,7 +72,7 @@ from numpy.typing import ArrayLike
 from scipy import special
 
 from asymptotics.arrays import scalar_or_array
-from asymptotics.materials import check_n, check_x
+from asymptotics.materials import GAMMA_MAX, check_n, check_x
 
 from numeric.core.graded_mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
@@ -170,8 +170,8 @@ def _checked_constants(flat: FlatStresses) -> tuple[float, float, float]:
         if not hasattr(flat, name):
             raise ValueError(f"flat must provide '{name}' (see FlatStresses)")
     gamma, mu, c = float(flat.gamma), float(flat.mu), float(flat.c)
-    if not 0.0 <= gamma < 1.0:
-        raise ValueError(f"flat.gamma must lie in [0, 1), got {flat.gamma!r}")
+    if not 0.0 <= gamma <= GAMMA_MAX:
+        raise ValueError(f"flat.gamma must lie in [0, 3/4], got {flat.gamma!r}")
     if not mu >= 0.0:
         raise ValueError(f"flat.mu must be >= 0 (inf when adhesive), got {flat.mu!r}")
     if not 0.0 <= c <= 1.0:

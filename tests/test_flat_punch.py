@@ -70,14 +70,27 @@ def test_adhesive_limit_closed_forms(kwargs):
 
 
 def test_incompressible_limit_has_no_coupling():
-    # nu = 1/2: gamma = 0 decouples (2.2): q = 0 and p is frictionless for any mu; the
-    # eigenvalue relation (2.28) mu = gamma f0(c) gives mu = 0 for every c.
+    # nu = 1/2: gamma = 0 decouples (2.2): q = 0 and p is frictionless for any mu, and nothing slips (c = 1).
+    # pressure: (2/pi)/sqrt((1 - x)(1 + x)) both sides, the same 4 correctly rounded operations: 1e-15 is 4.5 eps
     s = flat_punch(nu=0.5, mu=0.3)
     x = np.array([0.0, 0.5, 0.99])
-    assert s.gamma == 0.0 and s.compliance == 1.0
+    assert s.gamma == 0.0 and s.compliance == 1.0 and s.c == 1.0
     np.testing.assert_allclose(s.pressure(x), 2 / np.pi / np.sqrt((1 - x) * (1 + x)), rtol=1e-15, atol=0)
     assert np.all(s.shear(x) == 0.0)
-    assert flat_punch(nu=0.5, c=0.5).mu == 0.0
+
+
+@pytest.mark.parametrize("kwargs", [dict(nu=0.5), dict(gamma=0.0), dict(nu=0.5, rtol=1e-3)])
+def test_no_friction_coefficient_gives_a_partial_stick_zone_without_coupling(kwargs):
+    # given mu at gamma = 0, c = 1 for every mu > 0 and c = 0 at mu = 0; so given c in (0, 1) there is no mu
+    # (mu = gamma f0(c) (2.28) -> 0 as gamma -> 0, but mu = 0 itself gives c = 0): the error says so, and c = 1
+    # answers mu = inf, whose c is 1 again
+    assert [flat_punch(mu=mu, **kwargs).c for mu in (0.0, 1e-300, 0.3, math.inf)] == [0.0, 1.0, 1.0, 1.0]
+    for c in (1e-300, 0.5, 1.0 - 1e-16):
+        with pytest.raises(NoEigenvalueError, match="at gamma = 0 .*c = 1 for every mu > 0"):
+            flat_punch(c=c, **kwargs)
+    with pytest.raises(NoEigenvalueError, match="at gamma = 0"):
+        friction_coefficient([0.5, 1.0], 0.5)
+    assert flat_punch(c=1.0, **kwargs).mu == math.inf
 
 
 # ---------------------------------------------------------------------------------------

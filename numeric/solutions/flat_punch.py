@@ -123,7 +123,8 @@ def flat_punch(
     ------
     NoEigenvalueError
         If c is above the largest stick radius c_max(gamma) (``numeric.largest_stick_radius``) by more than
-        rounding. Within rounding of c_max (4 units in the last place of c, or twice the distance of the
+        rounding, or if gamma = 0 (nu = 1/2) and c < 1: without coupling every mu > 0 gives c = 1 and mu = 0
+        gives c = 0 (``numeric.solutions.limits``). Within rounding of c_max (4 units in the last place of c, or twice the distance of the
         level's c_max from the closed form) the result is the slip limit (``numeric.slip_limit``: mu = inf,
         c = c_max, ``route`` says so); just below, mu is finite with the shift of the level's c_max in ``error``.
     SolverError

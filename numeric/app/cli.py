@@ -6,8 +6,9 @@ and the studies: ``figures``, ``bench``, ``stability``, ``derivations`` (the com
 and ``tables`` (the paper's tables). ``hertz-friction CMD --help`` describes each.
 
 Exit codes: 0 success; 2 bad usage or bad input (argparse's convention; the message, naming
-the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``,
-``NoEigenvalueError``; for ``table``, any failed row, the others still being written).
+the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``) or no
+solution (``NoEigenvalueError``: no friction coefficient gives the stick radius asked for); for
+``table``, any failed row, the others still being written.
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import json
 import math
 import re
 import sys
+import warnings
 from pathlib import Path
 
 _PREFIXES = {-12: "p", -9: "n", -6: "u", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
@@ -59,7 +61,7 @@ def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="hertz-friction",
         description="Hertz contact with finite friction (D. A. Spence, J. Elasticity 5 (1975) 297-319).",
-        epilog="Exit codes: 0 ok, 1 numerical failure, 2 bad usage or input.",
+        epilog="Exit codes: 0 ok, 1 numerical failure or no solution, 2 bad usage or input.",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     _physical_parsers(commands)
@@ -79,8 +81,9 @@ def _physical_parsers(commands) -> None:
     p.add_argument("--radius", type=float, required=True, help="punch radius a, m")
     _material_args(p)
     p = commands.add_parser("cone", help="a cone z = r cot(theta)", description=phys.format(what="a cone"))
-    p.add_argument("--semi-angle", type=float, required=True, metavar="DEG",
-                   help="semi-angle theta at the apex, degrees, in (45, 90) (e.g. 70.3: Berkovich-equivalent)")
+    p.add_argument("--semi-angle-deg", "--semi-angle", type=float, required=True, metavar="DEG", dest="semi_angle_deg",
+                   help="semi-angle theta at the apex, degrees, in (45, 90) (e.g. 70.3: Berkovich-equivalent); "
+                        "the same unit as PowerLaw.cone")
     _material_args(p)
     p = commands.add_parser("power-law", help="a body z = k r^n or z = r^n/(n b^(n-1))",
                             description=phys.format(what="a power-law body z = k r^n"))
@@ -177,18 +180,20 @@ def _shape(args):
     if args.command == "punch":
         return FlatPunch(args.radius)
     if args.command == "cone":
-        return PowerLaw.cone(math.radians(args.semi_angle))
+        return PowerLaw.cone(args.semi_angle_deg)
     if args.b is not None:
         return PowerLaw.from_length(args.n, args.b)
     return PowerLaw(args.n, args.k)
 
 
 def _run_physical(args) -> int:
-    from numeric.app.contact import indent
+    from numeric.app.contact import SmallStrainWarning, indent
 
     half, indenter = _elastic_bodies(args)
-    contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
-                     level=args.level)
+    with warnings.catch_warnings():  # said in the output instead (text: a last line; JSON: "warning")
+        warnings.simplefilter("ignore", SmallStrainWarning)
+        contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
+                         level=args.level)
     if args.json:
         sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
     else:
@@ -198,6 +203,8 @@ def _run_physical(args) -> int:
 
 def _describe(s) -> str:
     """The contact as a human-readable table with units."""
+    from numeric.app.contact import SMALL_STRAIN, small_strain_message
+
     pair = s.materials
     hs = pair.half_space
     body = "rigid" if pair.indenter is None else \
@@ -234,6 +241,8 @@ def _describe(s) -> str:
     lines += ["", f"stick fraction c = {s.c:.9g}, P* = {s.compliance:.9g} (flat punch P0* = {s.flat_compliance:.9g})"
               + ("" if s.A is None else f", A = {s.A:.9g}"),
               f"route: {s.route}; estimated absolute error of c and P*: {s.error:.1e}"]
+    if s.strain > SMALL_STRAIN:
+        lines.append(f"warning: {small_strain_message(s.strain)}")
     return "\n".join(lines) + "\n"
 
 
@@ -465,7 +474,10 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write(f"hertz-friction {args.command}: error: {err.name or err} is needed here; "
                          "install it with pip install -e \".[plot]\"\n")
         return 2
-    except (SolverError, NoEigenvalueError) as err:
+    except NoEigenvalueError as err:  # the input has no solution (c above c_max, or c < 1 at gamma = 0)
+        sys.stderr.write(f"hertz-friction {args.command}: no solution: {err}\n")
+        return 1
+    except SolverError as err:
         sys.stderr.write(f"hertz-friction {args.command}: numerical failure: {err}\n")
         return 1
 

@@ -94,13 +94,22 @@ Other codes' parameters
 Input checks
 ------------
 Loads, approaches, lengths and moduli must be finite and > 0, -1 < nu <= 1/2, mu >= 0 (inf
-allowed: full stick), n > 0, exactly one of load and approach, exactly one of E and G.
-Units are not guessed from magnitudes (soft gels have E ~ 1 kPa, so no bound on E alone is
-safe); instead the result must be within the linear half-space theory: the strain measure
-max(delta/a, surface slope at the contact edge, mean pressure / E*) must be below 1,
-else a ``ValueError`` names the load (or approach) and suggests checking the units. A
-modulus given in GPa or MPa by mistake (E = 70 for 70 GPa) trips this check; not every slip
-can be caught (a radius given in mm makes the contact milder, not impossible).
+allowed: full stick), n > 0, exactly one of load and approach, exactly one of E and G; the
+cone's semi-angle is in degrees, in (45, 90). Units are not guessed from magnitudes (soft gels
+have E ~ 1 kPa, so no bound on E alone is safe); instead the result must be within the linear
+half-space theory. Its strain measure ``Contact.strain`` = max(delta/a, surface slope at the
+contact edge, mean pressure / E*) (for a sphere the slope is a/R, and delta/a = a/R too):
+
+* above ``STRAIN_LIMIT`` = 1 the input is rejected, a ``ValueError`` naming the load (or
+  approach) and suggesting to check the units. A modulus given in GPa or MPa by mistake
+  (E = 70 for 70 GPa) trips this check; not every slip can be caught (a radius given in mm
+  makes the contact milder, not impossible);
+* above ``SMALL_STRAIN`` = 0.1 the result comes with a ``SmallStrainWarning``: Hertz theory
+  treats both bodies as linear elastic half-spaces with small surface slopes, and its error
+  grows in proportion to the strain measure (Johnson, *Contact Mechanics*, §4.2: a << R). A 5 mm
+  ball at 1.5 MN on glass has a/R = 0.83: a number, but not a physical answer. A cone's
+  strain does not depend on the load but on its angle (delta/a = A cot theta, A ~ pi/2: 0.56 at
+  the Berkovich-equivalent 70.3 deg), so cones sharper than about 86 deg always warn.
 
 References
 ----------
@@ -111,6 +120,7 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -134,10 +144,19 @@ __all__ = [
     "Contact",
     "GridSolution",
     "indent",
+    "small_strain_message",
+    "SmallStrainWarning",
+    "SMALL_STRAIN",
     "STRAIN_LIMIT",
 ]
 
 STRAIN_LIMIT = 1.0  # strain measure (delta/a, edge slope, mean pressure/E*) above which input is rejected
+SMALL_STRAIN = 0.1  # ... above which Hertz theory no longer applies (a/R < 0.1 for a sphere): a warning
+
+
+class SmallStrainWarning(UserWarning):
+    """The contact's strain measure (``Contact.strain``: a/R for a sphere) exceeds ``SMALL_STRAIN``: the result is
+    that of the linear half-space theory, whose error grows like the strain."""
 _GRID = np.linspace(0.0, 1.0, 257)  # search grid in x = r/a for the maxima, then zoomed
 _ZOOMS = 4
 
@@ -313,17 +332,24 @@ class PowerLaw:
         return cls(2.0, 0.5 / R, f"sphere, radius {R:.6g} m")
 
     @classmethod
-    def cone(cls, semi_angle: float) -> PowerLaw:
-        """A cone of semi-angle theta at the apex (radians), z = r cot(theta): n = 1.
+    def cone(cls, semi_angle_deg: float) -> PowerLaw:
+        """A cone of semi-angle theta at the apex, in degrees, z = r cot(theta): n = 1.
 
-        The half-space theory needs a small surface slope, theta close to pi/2 ([S75] after
-        (3.19)); 45 deg < theta < 90 deg is accepted (e.g. 70.3 deg, the Berkovich-equivalent cone).
+        Degrees, as on the command line (``--semi-angle-deg``) and as indenters are specified. The
+        half-space theory needs a small surface slope, theta close to 90 deg ([S75] after (3.19));
+        45 < theta < 90 is accepted (e.g. 70.3, the Berkovich-equivalent cone, whose strain measure
+        delta/a = 0.56 is above ``SMALL_STRAIN``, so ``indent`` warns). An angle in radians falls
+        below 45 and is refused, not misread.
         """
-        theta = float(semi_angle)
-        if not (math.pi / 4 < theta < math.pi / 2):
-            raise ValueError(f"semi_angle (cone semi-angle at the apex) must lie in (45, 90) degrees, got "
-                             f"{math.degrees(theta):.6g} degrees")
-        return cls(1.0, 1.0 / math.tan(theta), f"cone, semi-angle {math.degrees(theta):.6g} deg")
+        try:
+            theta = float(semi_angle_deg)
+        except (TypeError, ValueError):
+            raise TypeError(f"semi_angle_deg must be a real number (degrees), got {semi_angle_deg!r}") from None
+        if not 45.0 < theta < 90.0:
+            hint = " (radians? the angle is in degrees)" if 0.0 < theta <= 0.5 * math.pi else ""
+            raise ValueError(f"semi_angle_deg (cone semi-angle at the apex) must lie in (45, 90) degrees, got "
+                             f"{semi_angle_deg!r}{hint}")
+        return cls(1.0, 1.0 / math.tan(math.radians(theta)), f"cone, semi-angle {theta:.6g} deg")
 
     @classmethod
     def from_length(cls, n: float, b: float) -> PowerLaw:
@@ -414,6 +440,9 @@ class Contact:
         Where it occurs, m (None when the shear vanishes everywhere). Locations are
         found to ~1e-7 a by zooming a grid (the maxima are flat, so the values are exact
         to the solver's accuracy).
+    strain : float
+        max(delta/a, surface slope at r = a, mean pressure/E*): a/R for a sphere. Rejected above
+        ``STRAIN_LIMIT``, warned above ``SMALL_STRAIN`` (module docstring).
     error : float
         The dimensionless solver's estimated absolute error in c, mu, P0* (0 for closed forms);
         the relative errors of a, delta, P and the stiffness are of the same order.
@@ -442,6 +471,7 @@ class Contact:
     max_pressure_radius: float
     max_shear: float
     max_shear_radius: float | None
+    strain: float
     error: float
     route: str
     frictionless: Contact | None = field(repr=False)
@@ -577,8 +607,11 @@ def _contact_dict(contact: Contact) -> dict:
         "compliance": contact.compliance,
         "flat_compliance": contact.flat_compliance,
         "indentation_constant": contact.A,
+        "strain": contact.strain,
     }
     out = {k: _finite_or_none(v) for k, v in out.items()}
+    if contact.strain > SMALL_STRAIN:
+        out["warning"] = small_strain_message(contact.strain)
     if contact.mu == 0.0:
         out["frictionless"] = dict(out)
     elif contact.frictionless is not None:
@@ -650,6 +683,13 @@ def _maximum(f, breakpoints: np.ndarray) -> tuple[float, float | None]:
     return best, best_x
 
 
+def small_strain_message(strain: float) -> str:
+    """Why a contact with this strain measure (above ``SMALL_STRAIN``) is outside Hertz theory."""
+    return (f"strain measure {strain:.3g} (a/R for a sphere; approach/radius, edge slope or mean pressure/E*) exceeds "
+            f"{SMALL_STRAIN:g}: Hertz theory assumes small strains and slopes on two linear elastic half-spaces, so "
+            "this result is the linear theory's, with an error of the order of the strain measure")
+
+
 def _check_strain(measure: float, given: str, value: float) -> None:
     if not measure < STRAIN_LIMIT:
         raise ValueError(
@@ -693,6 +733,11 @@ def indent(
     -------
     Contact
 
+    Warns
+    -----
+    SmallStrainWarning
+        If the strain measure ``Contact.strain`` (a/R for a sphere) exceeds ``SMALL_STRAIN`` = 0.1.
+
     Raises
     ------
     ValueError
@@ -711,16 +756,24 @@ def indent(
     (True, True)
     """
     mu_value, given, value = _checked(shape, half_space, indenter, mu, load, approach)
-    pair = MaterialPair(half_space, indenter)
-    sol = _dimensionless(shape, mu_value, pair.gamma, level)
+    contact = _indent(shape, MaterialPair(half_space, indenter), mu_value, given, value, level, with_frictionless)
+    if contact.strain > SMALL_STRAIN:
+        warnings.warn(SmallStrainWarning(small_strain_message(contact.strain)), stacklevel=2)
+    return contact
+
+
+def _indent(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, given: str, value: float, level: int,
+            with_frictionless: bool) -> Contact:
+    """``indent`` on checked input, without the warning (given once, for the contact asked for)."""
+    sol = _dimensionless(shape, mu, pair.gamma, level)
     scaled = _scaled(shape, sol, pair.modulus, given, value)
     a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
-    _check_strain(max(delta / a, scaled.edge_slope, P / (math.pi * a * a) / pair.reduced_modulus), given, value)
+    strain = max(delta / a, scaled.edge_slope, P / (math.pi * a * a) / pair.reduced_modulus)
+    _check_strain(strain, given, value)
     frictionless = None
-    if with_frictionless and mu_value != 0.0:
-        frictionless = indent(shape, half_space, mu=0.0, load=load, approach=approach, indenter=indenter,
-                              level=level, with_frictionless=False)
-    return _contact(shape, pair, mu_value, sol, scaled, frictionless)
+    if with_frictionless and mu != 0.0:
+        frictionless = _indent(shape, pair, 0.0, given, value, level, False)
+    return _contact(shape, pair, mu, sol, scaled, strain, frictionless)
 
 
 def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, str, float]:
@@ -778,7 +831,7 @@ def _scaled(shape: FlatPunch | PowerLaw, sol: FlatPunchSolution | PowerLawSoluti
 
 
 def _contact(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, sol: FlatPunchSolution | PowerLawSolution,
-             scaled: _Scaled, frictionless: Contact | None) -> Contact:
+             scaled: _Scaled, strain: float, frictionless: Contact | None) -> Contact:
     """The ``Contact``: stiffness, the maxima of the tractions in Pa, and the solver's error and route."""
     flat = sol.flat if isinstance(sol, PowerLawSolution) else sol
     a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
@@ -792,6 +845,6 @@ def _contact(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, sol: Fl
         flat_compliance=flat.compliance, A=sol.A if isinstance(sol, PowerLawSolution) else None, contact_radius=a,
         stick_radius=sol.c * a, approach=delta, load=P, stiffness=stiffness, mean_pressure=P / (math.pi * a * a),
         max_pressure=scale * p_max, max_pressure_radius=p_at * a,
-        max_shear=scale * q_max, max_shear_radius=None if q_at is None else q_at * a,
+        max_shear=scale * q_max, max_shear_radius=None if q_at is None else q_at * a, strain=strain,
         error=flat.error, route=flat.route, frictionless=frictionless, _solution=sol,
     )

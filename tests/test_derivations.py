@@ -85,3 +85,11 @@ def test_regeneration_keeps_a_document_whose_figures_moved_within_tolerance(tmp_
     path.write_text(text.replace(row, row.rsplit("|", 2)[0] + "| 3e-13 |"), encoding="utf-8")
     assert regenerate(tmp_path, fast=True, check=True) == ["appendix_b.md"]
 
+
+def test_the_script_states_its_own_usage(capsys):
+    # python derivations/regenerate.py --help used to print the usage of hertz-friction derivations (with a
+    # --directory the script fills in itself)
+    assert _regenerate().main(["--help"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("usage: python derivations/regenerate.py [-h] [--fast] [--check]\n")
+    assert _regenerate().main(["--directory", "x"]) == 2

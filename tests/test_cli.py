@@ -149,7 +149,7 @@ def test_table_csv_and_json(capsys, tmp_path):
     for r in rows:  # the Chebyshev table is an independent route (7e-12 in mu)
         assert float(r["c"]) == pytest.approx(float(stick_radius(float(r["mu"]), 0.25)), rel=1e-9)
         assert r["status"] == "ok"
-    assert "2/2 rows" in err
+    assert "table: 100%" in err and "2/2" in err  # a tqdm bar
     target = tmp_path / "t.json"
     code, out, err = run(capsys, ["table", "--mu", "0.2", "--nu", "0.25", "--format", "json", "--output", str(target)])
     data = json.loads(target.read_text())
@@ -275,3 +275,11 @@ def test_no_solution_is_said_as_such(capsys):
     assert code == 1 and out == ""
     assert err.startswith("hertz-friction solve: no solution: no friction coefficient gives stick radius c = 0.5 at "
                           "gamma = 0") and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("argv", [["table", "--mu", "0.2", "--nu", "0.25", "--progress", "always", "--quiet"],
+                                  ["tables", "--quiet"]])
+def test_quiet_draws_no_progress_even_on_a_terminal(capsys, monkeypatch, argv):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    code, out, err = run(capsys, argv)
+    assert code == 0 and out and err == ""

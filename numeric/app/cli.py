@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import csv
 import io
+import itertools
 import json
 import math
 import re
@@ -121,7 +122,19 @@ def _table_parser(commands) -> None:
     p.add_argument("--sphere", action="store_true", help="add the sphere's A (3.2), C (3.4) and P* (3.17)")
     p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4), help="solver level (default 2)")
     p.add_argument("--progress", choices=("auto", "always", "never"), default="auto",
-                   help="row counter on stderr (auto: when stderr is a terminal)")
+                   help="progress bar with time to go on stderr (auto: when stderr is a terminal)")
+    _quiet_arg(p)
+
+
+def _quiet_arg(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--quiet", action="store_true", help="no progress on stderr (shown by default on a terminal)")
+
+
+def _progress(args) -> bool | str:
+    """The ``progress`` of numeric.solutions.progress for the options given: --quiet, else --progress, else auto."""
+    if args.quiet:
+        return False
+    return {"auto": "auto", "always": True, "never": False}[getattr(args, "progress", "auto")]
 
 
 def _study_parsers(commands) -> None:
@@ -131,6 +144,7 @@ def _study_parsers(commands) -> None:
                    help="file format, repeatable (default png)")
     p.add_argument("--only", action="append", metavar="NAME", dest="names",
                    help="only this figure (a key of numeric.studies.figure_plots.FIGURES), repeatable")
+    _quiet_arg(p)
     p = commands.add_parser("bench", help="the benchmark: error against run time of every method",
                             description="Run time against error of every method for the flat punch and the sphere "
                                         "(numeric.studies.bench); writes benchmark.md and benchmark.png.")
@@ -139,6 +153,7 @@ def _study_parsers(commands) -> None:
                    help="directory for benchmark.md and benchmark.png (default: derivations/ for the full run; "
                         "the quick run only prints unless given)")
     p.add_argument("--no-plot", action="store_true", help="do not draw benchmark.png")
+    _quiet_arg(p)
     p = commands.add_parser("stability", help="the stability study: parameter sweep, honesty of error, round-off",
                             description="Stress tests of numerical stability (numeric.studies.stability); writes "
                                         "stability.md.")
@@ -152,11 +167,12 @@ def _study_parsers(commands) -> None:
     p.add_argument("--check", action="store_true", help="compare with the committed files instead of writing")
     p.add_argument("--directory", type=Path, default=None,
                    help="the derivations folder (default: derivations/ of the source checkout)")
-    commands.add_parser(
+    p = commands.add_parser(
         "tables", help="print the tables of Spence (1975) beside our recomputation and the exact values",
         description="Print the paper's tables (the mesh and nu tables of §4, mu(c) of §4.2, 1/A of the sphere) "
                     "beside the paper's own scheme rerun and the full solution (numeric.studies.paper_tables; "
                     "the same as derivations/paper_tables.md). Takes about half a minute.")
+    _quiet_arg(p)
 
 
 def _elastic_bodies(args):
@@ -298,6 +314,7 @@ def _run_table(args) -> int:
     from asymptotics.materials import check_mu, check_nu
 
     from numeric import NoEigenvalueError, SolverError, flat_punch, power_law
+    from numeric.solutions.progress import progress_bar
 
     mus = _parse_range(args.mu, "mu")
     nus = _parse_range(args.nu, "nu")
@@ -307,11 +324,10 @@ def _run_table(args) -> int:
         check_mu(m)
     for v in nus:
         check_nu(v)
-    show = args.progress == "always" or (args.progress == "auto" and sys.stderr.isatty())
     total = len(mus) * len(nus)
     rows, failed = [], 0
-    for nu in nus:
-        for mu in mus:
+    with progress_bar(total, "table", _progress(args), unit="row") as bar:
+        for nu, mu in itertools.product(nus, mus):
             row = {"nu": nu, "gamma": None, "mu": mu, "c": None, "compliance": None, "error": None, "route": None}
             if args.sphere:
                 row.update({"sphere_A": None, "sphere_C": None, "sphere_compliance": None})
@@ -329,11 +345,7 @@ def _run_table(args) -> int:
                 failed += 1
                 row["status"] = f"failed: {err}"
             rows.append(row)
-            if show:
-                sys.stderr.write(f"\rtable: {len(rows)}/{total} rows")
-                sys.stderr.flush()
-    if show:
-        sys.stderr.write("\n")
+            bar.update()
     text = _format_rows(rows, args.format)
     if args.output:
         with open(args.output, "w", encoding="utf-8", newline="") as handle:
@@ -361,7 +373,8 @@ def _format_rows(rows: list[dict], fmt: str) -> str:
 def _run_figures(args) -> int:
     from numeric.studies.figure_plots import write_figures
 
-    paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names)
+    paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names,
+                          progress=_progress(args))
     for path in paths:
         sys.stdout.write(f"{path}\n")
     return 0
@@ -387,7 +400,8 @@ def _run_bench(args) -> int:
     from numeric.studies.documents import source_derivations
 
     output = args.output if args.output is not None or args.quick else source_derivations()
-    result = bench.run(bench.QUICK if args.quick else bench.FULL, progress=lambda message: print(message, file=sys.stderr))
+    report = (lambda message: None) if args.quiet else (lambda message: print(message, file=sys.stderr))
+    result = bench.run(bench.QUICK if args.quick else bench.FULL, progress=report)
     text = render(result)
     if output is not None:
         output.mkdir(parents=True, exist_ok=True)
@@ -427,7 +441,7 @@ def _run_derivations(args) -> int:
 def _run_tables(args) -> int:
     from numeric.studies.paper_tables import render
 
-    sys.stdout.write(render() + "\n")
+    sys.stdout.write(render(progress=_progress(args)) + "\n")
     return 0
 
 

@@ -35,6 +35,8 @@ __all__ = [
     "check_c",
     "check_n",
     "check_x",
+    "real_number",
+    "finite_array",
     "resolve_gamma",
 ]
 
@@ -43,11 +45,11 @@ GAMMA_MAX = 0.75
 """gamma at nu = -1, the supremum of gamma_from_nu over (-1, 1/2] and of |gamma_dissimilar| over all pairs."""
 
 
-def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
-    """``value`` as a float array: real numbers only (no None, strings, complex or objects: TypeError naming
-    ``name``), and no NaN (ValueError)."""
+def finite_array(value: ArrayLike, name: str) -> np.ndarray:
+    """``value`` as a float array: real numbers only (no None, strings, booleans, complex or objects: TypeError
+    naming ``name``), and no NaN (ValueError)."""
     raw = np.asarray(value) if value is not None else None
-    if raw is None or raw.dtype.kind not in "biuf":
+    if raw is None or raw.dtype.kind not in "iuf":
         raise TypeError(f"{name} must be a real number or an array of real numbers, got {value!r}")
     arr = raw.astype(float)
     if np.any(np.isnan(arr)):
@@ -57,7 +59,7 @@ def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
 
 def check_nu(nu: ArrayLike) -> np.ndarray:
     """Return ``nu`` as a float array, raising ``ValueError`` unless -1 < nu <= 1/2."""
-    arr = _finite_array(nu, "nu")
+    arr = finite_array(nu, "nu")
     if np.any((arr <= -1.0) | (arr > 0.5)):
         raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 1/2], got {nu!r}")
     return arr
@@ -70,7 +72,7 @@ def check_gamma(gamma: ArrayLike) -> np.ndarray:
     every pair of bodies (``gamma_dissimilar``). The closed end 3/4, the limit nu -> -1, is accepted:
     the problem is regular there (kappa = (2/pi) atanh(3/4)), and the tables are built up to it.
     """
-    arr = _finite_array(gamma, "gamma")
+    arr = finite_array(gamma, "gamma")
     if np.any((arr < 0.0) | (arr > GAMMA_MAX)):
         raise ValueError(f"gamma must lie in [0, 3/4] (no pair of materials with nu in (-1, 1/2] reaches |gamma| = 3/4), "
                          f"got {gamma!r}")
@@ -79,7 +81,7 @@ def check_gamma(gamma: ArrayLike) -> np.ndarray:
 
 def check_mu(mu: ArrayLike) -> np.ndarray:
     """Return ``mu`` as a float array, raising ``ValueError`` unless 0 <= mu <= inf."""
-    arr = _finite_array(mu, "mu")
+    arr = finite_array(mu, "mu")
     if np.any(arr < 0.0):
         raise ValueError(f"mu (friction coefficient) must be >= 0, got {mu!r}")
     return arr
@@ -87,15 +89,26 @@ def check_mu(mu: ArrayLike) -> np.ndarray:
 
 def check_c(c: ArrayLike) -> np.ndarray:
     """Return ``c`` as a float array, raising ``ValueError`` unless 0 < c <= 1."""
-    arr = _finite_array(c, "c")
+    arr = finite_array(c, "c")
     if np.any((arr <= 0.0) | (arr > 1.0)):
         raise ValueError(f"c (stick radius / contact radius) must lie in (0, 1], got {c!r}")
     return arr
 
 
+def real_number(value: object, name: str) -> float:
+    """``value`` as a float if it is one real number (a Python or numpy int or float, or a one-element array of
+    one); else a TypeError naming ``name`` (None, strings, booleans, complex numbers, objects, longer arrays)
+    or, for NaN, a ValueError."""
+    arr = finite_array(value, name)
+    if arr.size != 1:
+        raise TypeError(f"{name} must be a single number, got shape {arr.shape}")
+    return float(arr.reshape(()))
+
+
 def check_n(n: float) -> float:
-    """Return the power-law exponent ``n`` as a float, raising ``ValueError`` unless n > 0."""
-    value = float(n)
+    """Return the power-law exponent ``n`` as a float, raising ``ValueError`` unless n > 0 (TypeError unless a
+    real number)."""
+    value = real_number(n, "n")
     if not value > 0.0 or math.isinf(value):
         raise ValueError(f"n (power-law exponent of the indenter) must be finite and > 0, got {n!r}")
     return value
@@ -103,7 +116,7 @@ def check_n(n: float) -> float:
 
 def check_x(x: ArrayLike) -> np.ndarray:
     """Return ``x`` as a float array, raising ``ValueError`` unless 0 <= x <= 1 (radius over contact radius)."""
-    arr = _finite_array(x, "x")
+    arr = finite_array(x, "x")
     if np.any((arr < 0.0) | (arr > 1.0)):
         raise ValueError(f"x (radius over contact radius) must lie in [0, 1], got {x!r}")
     return arr
@@ -193,5 +206,5 @@ def resolve_gamma(nu: float | None, gamma: float | None) -> float:
     if (nu is None) == (gamma is None):
         raise ValueError("give exactly one of nu (Poisson's ratio) or gamma (coupling constant)")
     if gamma is None:
-        return float(gamma_from_nu(nu))
-    return float(check_gamma(gamma))
+        return float(gamma_from_nu(real_number(nu, "nu")))
+    return float(check_gamma(real_number(gamma, "gamma")))

@@ -127,7 +127,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from asymptotics.arrays import read_only, scalar_or_array
-from asymptotics.materials import check_mu, check_n, check_nu, gamma_dissimilar
+from asymptotics.materials import check_mu, check_n, check_nu, finite_array, gamma_dissimilar, real_number
 
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import PowerLawSolution, power_law
@@ -162,11 +162,8 @@ _ZOOMS = 4
 
 
 def _positive(value: float, name: str, what: str) -> float:
-    """``value`` as a float, raising ValueError naming it unless finite and > 0."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} ({what}) must be a number, got {value!r}") from None
+    """``value`` as a float, raising ValueError naming it unless finite and > 0 (TypeError unless a number)."""
+    v = real_number(value, name)
     if not (math.isfinite(v) and v > 0.0):
         raise ValueError(f"{name} ({what}) must be finite and > 0, got {value!r}")
     return v
@@ -189,7 +186,7 @@ class Elastic:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "G", _positive(self.G, "G", "shear modulus, Pa"))
-        object.__setattr__(self, "nu", float(check_nu(self.nu)))
+        object.__setattr__(self, "nu", float(check_nu(real_number(self.nu, "nu"))))
 
     @property
     def E(self) -> float:
@@ -210,9 +207,9 @@ def elastic(*, nu: float, E: float | None = None, G: float | None = None, prefix
     if (E is None) == (G is None):
         raise ValueError(f"give exactly one of {prefix}E (Young's modulus) or {prefix}G (shear modulus)")
     try:
-        nu_value = float(check_nu(nu))
-    except ValueError as err:
-        raise ValueError(f"{prefix}{err}") from None
+        nu_value = float(check_nu(real_number(nu, "nu")))
+    except (ValueError, TypeError) as err:
+        raise type(err)(f"{prefix}{err}") from None
     if G is None:
         G = _positive(E, f"{prefix}E", "Young's modulus, Pa") / (2.0 * (1.0 + nu_value))
     return Elastic(_positive(G, f"{prefix}G", "shear modulus, Pa"), nu_value)
@@ -341,10 +338,7 @@ class PowerLaw:
         delta/a = 0.56 is above ``SMALL_STRAIN``, so ``indent`` warns). An angle in radians falls
         below 45 and is refused, not misread.
         """
-        try:
-            theta = float(semi_angle_deg)
-        except (TypeError, ValueError):
-            raise TypeError(f"semi_angle_deg must be a real number (degrees), got {semi_angle_deg!r}") from None
+        theta = real_number(semi_angle_deg, "semi_angle_deg")
         if not 45.0 < theta < 90.0:
             hint = " (radians? the angle is in degrees)" if 0.0 < theta <= 0.5 * math.pi else ""
             raise ValueError(f"semi_angle_deg (cone semi-angle at the apex) must lie in (45, 90) degrees, got "
@@ -433,7 +427,8 @@ class Contact:
     max_pressure, max_pressure_radius : float
         Largest pressure (Pa) and where (m); inf for a flat punch (at r = a) and for n <= 1 (at r = 0).
     max_shear : float
-        Largest magnitude of the shear traction, Pa (0 without friction or coupling). For a
+        Largest magnitude of the shear traction, Pa (0 without friction or coupling; inf for a flat punch
+        with friction, at r = a, like the pressure). For a
         cone (n = 1) (3.13) gives q(0) = int_0^1 q0(t)/t dt > 0: the radial shear jumps at the
         apex (like the logarithmic pressure (3.20)), and for n < 1 it is infinite there.
     max_shear_radius : float or None
@@ -482,10 +477,11 @@ class Contact:
         return self.materials.modulus * self.approach / self.contact_radius  # M delta / a of (2.1)
 
     def _dimensionless(self, r: ArrayLike, f, name: str) -> np.ndarray | float:
-        rs = np.asarray(r, dtype=float)
-        if np.any(np.isnan(rs)) or np.any(rs < 0.0):
+        rs = finite_array(r, name)
+        if np.any(rs < 0.0):
             raise ValueError(f"{name} (radius, m) must be >= 0 and not NaN, got {r!r}")
-        x = rs / self.contact_radius
+        with np.errstate(over="ignore"):  # a radius beyond the doubles' range over a is outside the contact
+            x = rs / self.contact_radius
         inside = x <= 1.0
         out = np.zeros(rs.shape)
         out[inside] = f(x[inside])
@@ -504,7 +500,9 @@ class Contact:
         """Slip per unit approach d(u_r1 - u_r2)/d delta = sign(gamma_bar) u0(r/a), dimensionless, (2.10), (3.15).
 
         Zero in the stick zone r < c a and outside the contact; negative (inward) in the
-        annulus for gamma_bar > 0. Per unit load divide by ``stiffness``.
+        annulus for gamma_bar > 0. Per unit load divide by ``stiffness``. Raises
+        ``NotImplementedError`` where the dimensionless solution is the asymptotic law's (c < 1e-5,
+        ``route`` says so), which has no slip displacement.
         """
         flat = self._solution.flat if isinstance(self._solution, PowerLawSolution) else self._solution
         sign = -1.0 if self.gamma < 0.0 else 1.0
@@ -522,17 +520,19 @@ class Contact:
         delta ~ a^n at fixed mu), P = P1 delta/delta1 for the flat punch; (P1, delta1) are
         this contact's load and approach. Increasing load only (§2.1).
         """
-        d = np.asarray(approach, dtype=float)
+        d = finite_array(approach, "approach")
         if np.any(~np.isfinite(d)) or np.any(d <= 0.0):
             raise ValueError(f"approach (m) must be finite and > 0, got {approach!r}")
-        return scalar_or_array(self.load * (d / self.approach) ** self._exponent)
+        with np.errstate(over="ignore", under="ignore"):
+            return _representable(self.load * (d / self.approach) ** self._exponent, "approach", "load")
 
     def approach_at(self, load: ArrayLike) -> np.ndarray | float:
         """The inverse of ``load_at``: delta(P) in m for P in N."""
-        P = np.asarray(load, dtype=float)
+        P = finite_array(load, "load")
         if np.any(~np.isfinite(P)) or np.any(P <= 0.0):
             raise ValueError(f"load (N) must be finite and > 0, got {load!r}")
-        return scalar_or_array(self.approach * (P / self.load) ** (1.0 / self._exponent))
+        with np.errstate(over="ignore", under="ignore"):
+            return _representable(self.approach * (P / self.load) ** (1.0 / self._exponent), "load", "approach")
 
     def on_grid(self, x: ArrayLike, y: ArrayLike = 0.0) -> GridSolution:
         """The tractions, slip rate, stick radius and approach at grid points (x, y) in m.
@@ -568,12 +568,20 @@ class Contact:
         return _contact_dict(self)
 
 
+def _representable(values: np.ndarray, given: str, result: str) -> np.ndarray | float:
+    """``values`` (of ``result``, computed from ``given``) unless one overflows to inf or underflows to 0."""
+    if not np.all(np.isfinite(values) & (values > 0.0)):
+        raise ValueError(f"{given}: the {result} it gives overflows or underflows double precision")
+    return scalar_or_array(values)
+
+
 def _on_grid(contact: Contact, x: ArrayLike, y: ArrayLike) -> GridSolution:
     """``Contact.on_grid``: the fields at (x, y), the shear split into its Cartesian components."""
-    xs, ys = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+    xs, ys = np.broadcast_arrays(finite_array(x, "x"), finite_array(y, "y"))
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ys))):
         raise ValueError("x and y (grid coordinates, m) must be finite")
-    r = np.hypot(xs, ys)
+    with np.errstate(over="ignore"):  # beyond the doubles: outside the contact
+        r = np.hypot(xs, ys)
     tau = np.asarray(contact.shear(r), dtype=float)
     with np.errstate(invalid="ignore", divide="ignore"):
         cos_t = np.where(r > 0.0, xs / np.where(r > 0.0, r, 1.0), 0.0)
@@ -766,9 +774,17 @@ def _indent(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, given: s
             with_frictionless: bool) -> Contact:
     """``indent`` on checked input, without the warning (given once, for the contact asked for)."""
     sol = _dimensionless(shape, mu, pair.gamma, level)
-    scaled = _scaled(shape, sol, pair.modulus, given, value)
-    a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
-    strain = max(delta / a, scaled.edge_slope, P / (math.pi * a * a) / pair.reduced_modulus)
+    try:
+        scaled = _scaled(shape, sol, pair.modulus, given, value)
+        a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
+        area = math.pi * a * a
+        if not all(0.0 < v < math.inf for v in (a, delta, P, area)):
+            raise OverflowError
+    except (OverflowError, ZeroDivisionError):  # Python floats raise where the contact leaves the doubles
+        raise ValueError(f"{given} = {value!r} {'N' if given == 'load' else 'm'}: the contact radius, approach, load "
+                         "or contact area of this indenter overflow or underflow double precision; check the units "
+                         "(SI: N, m, Pa)") from None
+    strain = max(delta / a, scaled.edge_slope, P / area / pair.reduced_modulus)
     _check_strain(strain, given, value)
     frictionless = None
     if with_frictionless and mu != 0.0:
@@ -784,7 +800,7 @@ def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, st
         raise ValueError("half_space and indenter must be Elastic (use elastic(E=..., nu=...))")
     if (load is None) == (approach is None):
         raise ValueError("give exactly one of load (N) or approach (m)")
-    mu_value = float(check_mu(mu))
+    mu_value = float(check_mu(real_number(mu, "mu")))
     if load is not None:
         return mu_value, "load", _positive(load, "load", "normal force, N")
     return mu_value, "approach", _positive(approach, "approach", "approach of the bodies, m")

@@ -34,7 +34,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
-from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, resolve_gamma
+from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, real_number, resolve_gamma
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
@@ -45,32 +45,30 @@ from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_M
 from numeric.solutions.solution import FlatPunchSolution, Offer, first_meeting
 from numeric.solutions.table_route import TABLE_RTOL, TableRoute
 
-__all__ = ["flat_punch", "check_rtol", "level_and_rtol"]
+__all__ = ["flat_punch", "check_level", "check_rtol", "level_and_rtol"]
 
 
 def check_rtol(rtol) -> float:
-    """``rtol`` as a float, raising ValueError naming it unless positive and finite."""
-    value = float(rtol)
+    """``rtol`` as a float, raising ValueError naming it unless positive and finite (TypeError unless a number)."""
+    value = real_number(rtol, "rtol")
     if not (math.isfinite(value) and value > 0.0):
         raise ValueError(f"rtol must be a positive finite number, got {rtol!r}")
     return value
 
 
-def _check_level(level) -> int:
-    try:
-        ok = 0 <= int(level) < len(RESOLUTIONS) and int(level) == level
-    except (TypeError, ValueError, OverflowError):
-        ok = False
-    if not ok:
+def check_level(level) -> int:
+    """``level`` as an int, raising ValueError naming it unless one of the resolution levels (TypeError unless a number)."""
+    value = real_number(level, "level")
+    if not (0.0 <= value < len(RESOLUTIONS) and value == math.floor(value)):
         raise ValueError(f"level must be an integer in [0, {len(RESOLUTIONS) - 1}], got {level!r}")
-    return int(level)
+    return int(value)
 
 
 def level_and_rtol(level, rtol) -> tuple[int, float | None]:
     """The checked level (default ``DEFAULT_LEVEL``) and rtol; not both may be given."""
     if level is not None and rtol is not None:
         raise ValueError("give level or rtol, not both (rtol chooses the route and the level)")
-    return (DEFAULT_LEVEL if level is None else _check_level(level)), (None if rtol is None else check_rtol(rtol))
+    return (DEFAULT_LEVEL if level is None else check_level(level)), (None if rtol is None else check_rtol(rtol))
 
 
 def flat_punch(

@@ -40,12 +40,17 @@ from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
 from numeric.core.table import table_given_mu, table_least_mu
 from numeric.solutions.law import LawRoute
-from numeric.solutions.limits import closed_form_given_c, closed_form_given_mu
+from numeric.solutions.limits import closed_form, closed_form_given_c, closed_form_given_mu
 from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_MAX, NEAR_C_MAX, SolverRoute
 from numeric.solutions.solution import FlatPunchSolution, Offer, first_meeting
 from numeric.solutions.table_route import TABLE_RTOL, TableRoute
 
-__all__ = ["flat_punch", "check_level", "check_rtol", "level_and_rtol"]
+__all__ = ["flat_punch", "check_level", "check_rtol", "level_and_rtol", "GAMMA_LAW_EXACT"]
+
+GAMMA_LAW_EXACT = 1e-100
+"""Below this gamma the law answers, whatever ``level`` or ``rtol``: its error (K4 gamma^4 relative, second
+order) is far below rounding there, while the solver's kernels lose gamma^2 to underflow (measured: right to
+6e-13 in c at gamma = 1e-150, c = 6.5e-49 for 0.485 and OverflowError at 1e-200)."""
 
 
 def check_rtol(rtol) -> float:
@@ -173,6 +178,8 @@ def _given_c(nu: float | None, gamma: float, c: float, level: int, rtol: float |
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, c, None)
+    if gamma < GAMMA_LAW_EXACT:
+        return law.last_resort(None, f"gamma < {GAMMA_LAW_EXACT:g}, where the law is exact to rounding")
     solver = SolverRoute(nu, gamma, c, None, c)
     return _cheapest(law, _table(nu, gamma, c, None, rtol), solver, level, rtol, lambda sol: sol.mu,
                      f"c < {C_ASYMPTOTIC:g}")
@@ -183,6 +190,11 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, None, mu)
+    if gamma < GAMMA_LAW_EXACT:
+        why = f"gamma < {GAMMA_LAW_EXACT:g}, where the law is exact to rounding"
+        if law.bracket.c == 1.0:  # 1 - c below the doubles' spacing: the adhesive stresses, exactly as well
+            return closed_form(nu, gamma, mu, 1.0, True, f"adhesive stresses (App. B): {why}, and 1 - c < 1e-16")
+        return law.last_resort(None, why)
     gap_max = float(largest_stick_radius_gap(gamma))
     if mu * gamma >= LAW_MU_GAMMA_MAX:  # far beyond the law: c is c_max to rounding, or 1 to within gap_max
         solver = SolverRoute(nu, gamma, None, mu, 1.0, gap_max)

@@ -13,7 +13,7 @@ import pytest
 
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.materials import gamma_dissimilar, gamma_from_nu
-from numeric import flat_punch
+from numeric import flat_punch, power_law
 from numeric.app.contact import (SMALL_STRAIN, Elastic, FlatPunch, MaterialPair, PowerLaw, SmallStrainWarning, elastic,
                                  indent)
 
@@ -307,3 +307,23 @@ def test_small_strain_limit_warns(load, warns):
         warnings.simplefilter("always")
         indent(PowerLaw.sphere(R), elastic(**GLASS), mu=0.3, load=load)  # with its frictionless reference
     assert len(caught) == int(warns)
+
+
+@pytest.mark.parametrize("nu", [0.22, 0.45])
+def test_stresses_shown_at_high_friction_are_that_friction_s(nu):
+    # the issue read the stresses at mu = 1e4 as another mu's: they are this mu's solution (q = mu p on the slip
+    # annulus; at nu = 0.45, 1 - c ~ 1e-23 is below what the stresses resolve and the route says they are the
+    # adhesive ones), and the maxima shown are at least those of a scan (1001 points plus the annulus), to the
+    # zoom's 1e-14; they agree with mu = inf to 6 digits because the stick zone saturates (c_max, 1 - c = 1.6e-5)
+    s = indent(PowerLaw.sphere(0.005), elastic(**GLASS | {"nu": nu}), mu=1e4, load=100.0)
+    h = power_law(2, nu=nu, mu=1e4)
+    assert s.c == h.c
+    x = np.unique(np.concatenate([np.linspace(0.0, 1.0, 1001), h.c + (1.0 - h.c) * np.linspace(0.0, 1.0, 21)]))
+    scale = s.materials.modulus * s.approach / s.contact_radius  # (2.1)
+    assert s.max_shear >= scale * np.max(np.abs(h.shear(x))) * (1 - 1e-14)
+    assert s.max_pressure >= scale * np.max(h.pressure(x)) * (1 - 1e-14)
+    if h.flat.route.startswith("solver"):
+        annulus = h.c + (1.0 - h.c) * np.array([0.25, 0.5, 0.75])
+        np.testing.assert_allclose(h.flat.shear(annulus), 1e4 * h.flat.pressure(annulus), rtol=1e-12)  # (2.8)
+    else:
+        assert h.flat.route.startswith("adhesive stresses")

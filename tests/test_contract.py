@@ -331,3 +331,34 @@ def _one_line_or_success(capsys, argv, rows_may_fail=False):
         assert err.startswith("usage:") or (err.startswith(f"hertz-friction {argv[0]}: error: ") and err.count("\n") == 1), \
             (argv, err)
     return code, out, err
+
+
+# ----------------------------------------------------------------------------- what the properties found
+def test_what_the_property_tests_found_answers_now():
+    # each case returned NaN, raised something unnamed or warned before. 1 - psi at x = 1e-20 against mpmath's
+    # psi_mp at 60 digits, within the fast form's rounding (about 20 operations and 4 elliptic-integral calls:
+    # rounding_bound(20, 4) = 5.9e-15); c = 1 in double where mu/gamma exceeds 12 (2.29), and at gamma = 0
+    import mpmath
+
+    from asymptotics.derivation import rounding_bound
+    from asymptotics.first_order import psi_mp, shear_ratio_first_order
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert float(asymptotics.psi(5e-324, 0.5)) == 1.0
+        with mpmath.workdps(80):
+            exact = float(1 - psi_mp(1e-20, 0.5, dps=60))
+        assert float(shear_ratio_first_order(1e-20, 0.5)) == pytest.approx(exact, rel=rounding_bound(20, 4))
+        assert float(asymptotics.stick_radius(1e300, nu=0.3)) == 1.0
+        assert float(asymptotics.stick_radius(0.3, gamma=1e-300)) == 1.0
+        assert float(asymptotics.stick_radius(1.0, gamma=0.0, order=2)) == 1.0
+        assert float(largest_stick_radius(gamma=5e-324)) == 1.0
+        assert 0.0 < float(friction_coefficient(5e-324, 0.3, progress=False)) < 1e-3
+    for call, name in ((lambda: power_law("2", nu=0.3, mu=0.3), "n"), (lambda: flat_punch(nu=0.3, mu=True), "mu"),
+                       (lambda: flat_punch(nu=0.3, mu=0.3, rtol="1e-3"), "rtol"),
+                       (lambda: slip_limit(nu=np.array([0.0])), None), (lambda: slip_limit(nu=0.0, level=0.5), "level"),
+                       (lambda: PowerLaw.sphere("0.005"), "radius")):
+        value, error = outcome(call)
+        assert (error is None) if name is None else (error is not None and str(error).startswith(name)), (name, error)
+    with pytest.raises(ValueError, match="^load = 5e-324 N: .* overflow or underflow"):
+        indent(PowerLaw.sphere(0.005), elastic(E=70e9, nu=0.22), mu=0.3, load=5e-324)

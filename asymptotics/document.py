@@ -37,9 +37,9 @@ __all__ = ["identity_residual", "fast_precise_difference", "render_part", "join"
 Block = tuple[str, str]  # (name, Markdown body)
 
 _BLOCK = re.compile(r"<!-- begin (?P<name>[^ ]+) -->\n(?P<body>.*?)<!-- end (?P=name) -->\n", re.S)
-_MARK, _BOUND = "\ue000", "\ue001"  # a measured figure is MARK value BOUND tolerance MARK in rendered text
+_MARK, _BOUND = "\ue000", "\ue001"  # a measured figure: MARK text BOUND value BOUND tolerance BOUND centre MARK
 # (private-use characters: not whitespace, so rstrip and split leave them alone)
-_FIGURE = r"(0|\d(?:\.\d+)?e[-+]\d+)"  # as _sig writes it
+_FIGURE = r"(-?\d+(?:\.\d+)?(?:e[-+]\d+)?)"  # a number as _sig and the reports write it (e-notation or fixed)
 
 
 def _once(f):
@@ -92,29 +92,38 @@ def _sig(value: float) -> str:
     return "0" if value == 0.0 else f"{value:.0e}"
 
 
-def measured(value: float, tolerance: float) -> str:
-    """A machine-dependent figure, written as ``_sig`` does, marked with the tolerance it is checked against."""
-    return f"{_MARK}{_sig(value)}{_BOUND}{tolerance!r}{_MARK}"
+def measured(value: float, tolerance: float, text: str | None = None, centre: float = 0.0) -> str:
+    """A machine-dependent figure, written as ``text`` (default ``_sig``, one digit in e-notation), marked with the
+    claim it is checked against: within ``tolerance`` of ``centre`` (0 for an error or a difference; for a
+    computed value its reference, or the value itself with the accuracy it is known to)."""
+    return f"{_MARK}{_sig(value) if text is None else text}{_BOUND}{value!r}{_BOUND}{tolerance!r}{_BOUND}{centre!r}{_MARK}"
 
 
 def text_of(rendered: str) -> str:
     """The Markdown of a rendered document: the marks of its measured figures removed."""
-    return re.sub(f"{_BOUND}[^{_MARK}]*{_MARK}", "", rendered).replace(_MARK, "")
+    return re.sub(f"{_BOUND}[^{_MARK}]*{_MARK}", "", rendered).replace(_MARK, "")  # keep each figure's text
 
 
 def agrees(committed: str, rendered: str) -> bool:
-    """Whether ``committed`` is ``text_of(rendered)`` but for measured figures, each of which meets its tolerance
-    in both (the rendered one is also checked by the tests of the registry)."""
-    parts = rendered.split(_MARK)  # fixed text at even positions, "value BOUND tolerance" at odd ones
+    """Whether ``committed`` is ``text_of(rendered)`` but for measured figures, each of which meets its claim
+    (within its tolerance of its centre) in both (the rendered ones are also checked by the tests)."""
+    parts = rendered.split(_MARK)  # fixed text at even positions, "text BOUND value BOUND tolerance BOUND centre" at odd
     pattern = "".join(re.escape(part) if k % 2 == 0 else _FIGURE for k, part in enumerate(parts))
     found = re.fullmatch(pattern, committed, re.S)
     if found is None:
         return False
     for old, figure in zip(found.groups(), parts[1::2]):
-        value, tolerance = figure.split(_BOUND)
-        if not (float(old) <= float(tolerance) and float(value) <= float(tolerance)):
+        _, value, tolerance, centre = (float(v) if k else v for k, v in enumerate(figure.split(_BOUND)))
+        if not (abs(float(old) - centre) <= tolerance + _half_unit(old) and abs(value - centre) <= tolerance):
             return False
     return True
+
+
+def _half_unit(figure: str) -> float:
+    """Half a unit in the last printed digit of ``figure`` (the rounding of a committed figure)."""
+    mantissa, _, exponent = figure.partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10.0 ** (int(exponent or 0) - decimals)
 
 
 def _summary(entries: tuple[Derivation, ...]) -> str:

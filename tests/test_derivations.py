@@ -66,6 +66,11 @@ def test_measured_figures_are_compared_against_their_tolerance():
     assert not agrees(committed, rendered.replace("3e-16", "2e-15"))  # the fresh one does
     assert not agrees(committed.replace("tolerance 1e-15", "tolerance 4e-15"), rendered)  # fixed numbers are exact
     assert not agrees(committed.replace("(B4)", "(B3)"), rendered)
+    # a computed value is held to the accuracy it is known to, around a reference (here itself) or its exact value
+    value = f"A = {measured(1.52708, 2e-5, '1.52708', 1.52708)}, gap = {measured(-3.6e-12, 1e-10, '-3.6e-12')}"
+    assert text_of(value) == "A = 1.52708, gap = -3.6e-12"
+    assert agrees("A = 1.52709, gap = 4.1e-11", value)
+    assert not agrees("A = 1.52711, gap = 4.1e-11", value) and not agrees("A = 1.52708, gap = -2e-10", value)
 
 
 def test_regeneration_keeps_a_document_whose_figures_moved_within_tolerance(tmp_path):

@@ -154,7 +154,7 @@ def pressure_adhesive(x: ArrayLike, gamma: float) -> np.ndarray | float:
     x : array_like
         Radius over contact radius, 0 <= x < 1.
     gamma : float
-        Coupling constant, 0 <= gamma < 1.
+        Coupling constant, 0 <= gamma <= 3/4.
 
     Examples
     --------

@@ -6,6 +6,14 @@ steps, identities) and compare them with a committed file whose expensive blocks
 computed with the full solver, figures) it leaves alone. Imports SymPy and mpmath when
 called; ``import asymptotics`` does not import this module.
 
+Measured figures (the fast-against-precise differences and the identities' residuals) depend
+on the machine: a float64 difference at rounding level moves with the CPU's libm and SIMD paths
+(numpy's AVX-512 paths against its baseline moved them by up to 3.4e-16 here, e.g. 3e-16 to 5e-16).
+The rendered text marks each (``measured``); ``agrees`` compares a committed document with a
+rendered one exactly except there, where both figures must meet the tolerance the figure is
+checked against, and ``text_of`` removes the marks for writing. So a document is current on
+any machine whose figures pass, and a rerun does not rewrite it for a last digit.
+
 References
 ----------
 [S75] D. A. Spence, "The Hertz contact problem with finite friction",
@@ -23,11 +31,15 @@ import numpy as np
 from .derivation import Derivation
 from .registry import PARTS, part
 
-__all__ = ["identity_residual", "fast_precise_difference", "render_part", "join", "blocks_of", "Block"]
+__all__ = ["identity_residual", "fast_precise_difference", "render_part", "join", "blocks_of", "Block", "measured",
+           "text_of", "agrees"]
 
 Block = tuple[str, str]  # (name, Markdown body)
 
 _BLOCK = re.compile(r"<!-- begin (?P<name>[^ ]+) -->\n(?P<body>.*?)<!-- end (?P=name) -->\n", re.S)
+_MARK, _BOUND = "\ue000", "\ue001"  # a measured figure: MARK text BOUND value BOUND tolerance BOUND centre MARK
+# (private-use characters: not whitespace, so rstrip and split leave them alone)
+_FIGURE = r"(-?\d+(?:\.\d+)?(?:e[-+]\d+)?)"  # a number as _sig and the reports write it (e-notation or fixed)
 
 
 def _once(f):
@@ -80,13 +92,47 @@ def _sig(value: float) -> str:
     return "0" if value == 0.0 else f"{value:.0e}"
 
 
+def measured(value: float, tolerance: float, text: str | None = None, centre: float = 0.0) -> str:
+    """A machine-dependent figure, written as ``text`` (default ``_sig``, one digit in e-notation), marked with the
+    claim it is checked against: within ``tolerance`` of ``centre`` (0 for an error or a difference; for a
+    computed value its reference, or the value itself with the accuracy it is known to)."""
+    return f"{_MARK}{_sig(value) if text is None else text}{_BOUND}{value!r}{_BOUND}{tolerance!r}{_BOUND}{centre!r}{_MARK}"
+
+
+def text_of(rendered: str) -> str:
+    """The Markdown of a rendered document: the marks of its measured figures removed."""
+    return re.sub(f"{_BOUND}[^{_MARK}]*{_MARK}", "", rendered).replace(_MARK, "")  # keep each figure's text
+
+
+def agrees(committed: str, rendered: str) -> bool:
+    """Whether ``committed`` is ``text_of(rendered)`` but for measured figures, each of which meets its claim
+    (within its tolerance of its centre) in both (the rendered ones are also checked by the tests)."""
+    parts = rendered.split(_MARK)  # fixed text at even positions, "text BOUND value BOUND tolerance BOUND centre" at odd
+    pattern = "".join(re.escape(part) if k % 2 == 0 else _FIGURE for k, part in enumerate(parts))
+    found = re.fullmatch(pattern, committed, re.S)
+    if found is None:
+        return False
+    for old, figure in zip(found.groups(), parts[1::2]):
+        _, value, tolerance, centre = (float(v) if k else v for k, v in enumerate(figure.split(_BOUND)))
+        if not (abs(float(old) - centre) <= tolerance + _half_unit(old) and abs(value - centre) <= tolerance):
+            return False
+    return True
+
+
+def _half_unit(figure: str) -> float:
+    """Half a unit in the last printed digit of ``figure`` (the rounding of a committed figure)."""
+    mantissa, _, exponent = figure.partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10.0 ** (int(exponent or 0) - decimals)
+
+
 def _summary(entries: tuple[Derivation, ...]) -> str:
     rows = ["| result | what | agrees with the paper | identities checked numerically | fast vs precise |",
             "|---|---|---|---|---|"]
     for d in entries:
         agree = "(not in the paper)" if d.printed is None else ("yes" if d.agrees else "no, see note")
-        ids = ", ".join(f"{i.name} ({_sig(identity_residual(i))})" for i in d.identities) or "none"
-        cmp_ = _sig(fast_precise_difference(d)) if d.comparison else "-"
+        ids = ", ".join(f"{i.name} ({measured(identity_residual(i), i.tol)})" for i in d.identities) or "none"
+        cmp_ = measured(fast_precise_difference(d), d.comparison.rtol) if d.comparison else "-"
         rows.append(f"| {d.label} | {d.title} | {agree} | {ids} | {cmp_} |")
     return "\n".join(rows)
 
@@ -110,14 +156,15 @@ def _entry(d: Derivation) -> str:
         lines += ["Steps SymPy cannot do, checked numerically with mpmath:", "",
                   "| identity | statement | points | digits | max abs residual | tolerance |", "|---|---|---|---|---|---|"]
         for i in d.identities:
-            lines.append(f"| {i.name} | ${i.statement}$ | {len(i.points)} | {i.dps} | {_sig(identity_residual(i))} | {_sig(i.tol)} |")
+            lines.append(f"| {i.name} | ${i.statement}$ | {len(i.points)} | {i.dps} | {measured(identity_residual(i), i.tol)} | {_sig(i.tol)} |")
         lines.append("")
     if d.fast is not None:
         lines.append(f"Numeric functions of ({', '.join(d.arguments)}): fast (numpy) {_name(d.fast)}"
                      + (f", precise (mpmath) {_name(d.precise)}" if d.precise else "") + ".")
         if d.comparison:
             lines.append(f"Largest relative difference at {len(d.comparison.points)} points: "
-                         f"{_sig(fast_precise_difference(d))} (tolerance {_sig(d.comparison.rtol)}).")
+                         f"{measured(fast_precise_difference(d), d.comparison.rtol)} "
+                         f"(tolerance {_sig(d.comparison.rtol)}).")
         lines.append("")
     if d.note:
         lines += [f"Note: {d.note}", ""]

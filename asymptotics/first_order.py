@@ -204,7 +204,7 @@ def _check_terms(terms: int) -> int:
 def _ratio(mu: ArrayLike, gamma: float) -> np.ndarray:
     mus = check_mu(mu)
     g = float(check_gamma(gamma))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # mu/gamma beyond the doubles is inf: c = 1
         return np.where(mus == 0.0, 0.0, mus / g) if g > 0.0 else np.where(mus == 0.0, 0.0, np.inf)
 
 
@@ -222,14 +222,15 @@ def _small_mu_series(e: np.ndarray, terms: int) -> np.ndarray:
 
 def one_minus_c_large_mu(ratio: np.ndarray, terms: int) -> np.ndarray:
     """1 - c from M = mu/gamma (an array) by the large-mu expansion (2.29) with ``terms`` terms; 0 where M
-    is infinite. The complement itself, free of the rounding of c = 1 - (1 - c) (``c_large_mu``)."""
-    finite = np.isfinite(ratio)
-    pm = np.pi * np.where(finite, ratio, 1.0)
+    is infinite or so large that exp(-pi M) underflows (pi M > 800), where the correction polynomials would
+    overflow. The complement itself, free of the rounding of c = 1 - (1 - c) (``c_large_mu``)."""
+    live = np.isfinite(ratio) & (np.pi * np.where(np.isfinite(ratio), ratio, 0.0) <= 800.0)
+    pm = np.pi * np.where(live, ratio, 1.0)
     w = np.exp(-pm)
     factor = np.ones_like(pm)
     for j, coeffs in enumerate(LARGE_MU_COEFFICIENTS[: terms - 1], start=1):
         factor += np.polynomial.polynomial.polyval(pm, coeffs) * w**j
-    return np.where(finite, 2.0 * w * factor, 0.0)  # (2.29)
+    return np.where(live, 2.0 * w * factor, 0.0)  # (2.29)
 
 
 def c_small_mu(mu: ArrayLike, gamma: float, terms: int = 3) -> np.ndarray | float:
@@ -367,7 +368,7 @@ def stick_radius_first_order(mu: ArrayLike, nu: float | None = None, *, gamma: f
     nu : float, optional
         Poisson's ratio; give exactly one of ``nu`` and ``gamma``.
     gamma : float, optional
-        Coupling constant (2.2), 0 <= gamma < 1.
+        Coupling constant (2.2), 0 <= gamma <= 3/4.
 
     Returns
     -------
@@ -478,31 +479,38 @@ def _psi_pair(x: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     one_minus_xi = (c - x) / c
     varpi = np.sqrt(one_minus_xi * (1.0 + xi) / one_mx2)   # omega/c
     omega = c * varpi
-    one_minus_varpi = xi * xi * one_m / (one_mx2 * (1.0 + varpi))
+    one_minus_varpi_over_xi = xi * one_m / (one_mx2 * (1.0 + varpi))  # not (xi^2 ...)/xi: xi may be subnormal
+    one_minus_varpi = xi * one_minus_varpi_over_xi
     atanh_c = np.arctanh(c)
-    near_centre = x < omega
-    # direct form (x >= omega): sin(phi) = varpi, cos^2(phi) = xi^2 (1-c^2)/(1-x^2), Delta^2 = (1-c^2)/(1-x^2)
-    sin_phi = np.minimum(varpi, 1.0)
-    cos2_phi = xi * xi * one_m / one_mx2
-    delta2_phi = one_m / one_mx2
-    f_phi = sin_phi * special.elliprf(cos2_phi, delta2_phi, 1.0)
-    e_minus_f_phi = -(c * c / 3.0) * sin_phi**3 * special.elliprd(cos2_phi, delta2_phi, 1.0)
-    lam = (2.0 / np.pi) * (ek * f_phi + kk * e_minus_f_phi)  # B&F 150.01
-    t_far = (2.0 * kk / (np.pi * xi)) * (varpi * _atanh_minus_identity(c) - _atanh_minus_identity(omega)) / atanh_c
-    psi_direct = lam - t_far  # (2.30)
-    # complement form (x < omega): sin(beta) = xi, cos^2(beta) = 1 - xi^2, Delta^2 = 1 - x^2
-    sin_beta = np.minimum(xi, 1.0)
-    cos2_beta = one_minus_xi * (1.0 + xi)
-    f_beta = sin_beta * special.elliprf(cos2_beta, one_mx2, 1.0)
-    e_beta = f_beta - (c * c / 3.0) * sin_beta**3 * special.elliprd(cos2_beta, one_mx2, 1.0)
-    one_minus_lam = (2.0 / np.pi) * (kk * (e_beta - omega * x) - k_minus_e * f_beta)
-    one_minus_c_omega = one_m * (1.0 + c * c - x * x) / (one_mx2 * (1.0 + c * omega))
-    delta_over_c = one_minus_varpi / one_minus_c_omega
-    ratio = _atanh_over(c * delta_over_c) / (_atanh_over(c) * one_minus_c_omega)  # atanh(delta)/(atanh(c) (1 - varpi))
-    t_near = (2.0 * kk / (np.pi * xi)) * one_minus_varpi * (ratio - 1.0)
-    complement = one_minus_lam + t_near
-    psi_value = np.where(near_centre, 1.0 - complement, psi_direct)
-    one_minus = np.where(near_centre, complement, 1.0 - psi_direct)
+    psi_value, one_minus = np.empty_like(x), np.empty_like(x)
+    near_centre = x < omega  # each form only where it is used: the direct one divides by xi
+    d = ~near_centre
+    if np.any(d):
+        # direct form (x >= omega): sin(phi) = varpi, cos^2(phi) = xi^2 (1-c^2)/(1-x^2), Delta^2 = (1-c^2)/(1-x^2)
+        sin_phi = np.minimum(varpi[d], 1.0)
+        cos2_phi = xi[d] * xi[d] * one_m[d] / one_mx2[d]
+        delta2_phi = one_m[d] / one_mx2[d]
+        f_phi = sin_phi * special.elliprf(cos2_phi, delta2_phi, 1.0)
+        e_minus_f_phi = -(c[d] * c[d] / 3.0) * sin_phi**3 * special.elliprd(cos2_phi, delta2_phi, 1.0)
+        lam = (2.0 / np.pi) * (ek[d] * f_phi + kk[d] * e_minus_f_phi)  # B&F 150.01
+        t_far = ((2.0 * kk[d] / (np.pi * xi[d])) * (varpi[d] * _atanh_minus_identity(c[d])
+                                                    - _atanh_minus_identity(omega[d])) / atanh_c[d])
+        psi_value[d] = lam - t_far  # (2.30)
+        one_minus[d] = 1.0 - psi_value[d]
+    n = near_centre
+    if np.any(n):
+        # complement form (x < omega): sin(beta) = xi, cos^2(beta) = 1 - xi^2, Delta^2 = 1 - x^2
+        sin_beta = np.minimum(xi[n], 1.0)
+        cos2_beta = one_minus_xi[n] * (1.0 + xi[n])
+        f_beta = sin_beta * special.elliprf(cos2_beta, one_mx2[n], 1.0)
+        e_beta = f_beta - (c[n] * c[n] / 3.0) * sin_beta**3 * special.elliprd(cos2_beta, one_mx2[n], 1.0)
+        one_minus_lam = (2.0 / np.pi) * (kk[n] * (e_beta - omega[n] * x[n]) - k_minus_e[n] * f_beta)
+        one_minus_c_omega = one_m[n] * (1.0 + c[n] * c[n] - x[n] * x[n]) / (one_mx2[n] * (1.0 + c[n] * omega[n]))
+        delta_over_c = one_minus_varpi[n] / one_minus_c_omega
+        # atanh(delta)/(atanh(c) (1 - varpi))
+        ratio = _atanh_over(c[n] * delta_over_c) / (_atanh_over(c[n]) * one_minus_c_omega)
+        one_minus[n] = one_minus_lam + (2.0 * kk[n] / np.pi) * one_minus_varpi_over_xi[n] * (ratio - 1.0)
+        psi_value[n] = 1.0 - one_minus[n]
     return psi_value, one_minus
 
 
@@ -650,7 +658,7 @@ def compliance_first_order(c: ArrayLike, gamma: float) -> np.ndarray | float:
     c : array_like
         Stick radius, 0 < c <= 1.
     gamma : float
-        Coupling constant, 0 <= gamma < 1.
+        Coupling constant, 0 <= gamma <= 3/4.
 
     Examples
     --------

@@ -49,7 +49,7 @@ _TERMS = 6  # theta series terms: q^(n^2) with n <= 6; q <= exp(-pi/kappa(3/4)) 
 def nome(gamma: ArrayLike) -> np.ndarray | float:
     """q = exp(-pi/kappa), kappa = (2/pi) atanh(gamma) (0 at gamma = 0)."""
     g = np.asarray(check_gamma(gamma), dtype=float)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):  # pi/kappa beyond the doubles (subnormal gamma): q = 0
         out = np.where(g > 0.0, np.exp(-math.pi / np.where(g > 0.0, (2.0 / math.pi) * np.arctanh(g), 1.0)), 0.0)
     return scalar_or_array(out)
 

@@ -3,7 +3,9 @@
 Nomenclature (used throughout both packages)
 --------------------------------------------
 nu     Poisson's ratio, in (-1, 1/2].
-gamma  (1 - 2 nu) / (2 - 2 nu), the coupling constant of (2.2); in [0, 3/4).
+gamma  (1 - 2 nu) / (2 - 2 nu), the coupling constant of (2.2); in [0, 3/4) for every material, and
+       |gamma_bar| < 3/4 for every pair (``gamma_dissimilar``); inputs may take the closed end 3/4,
+       the limit nu -> -1.
 kappa  (1/pi) log((1 + gamma)/(1 - gamma)), the oscillation index of the adhesive
        solution (4.10), (B1).
 mu     Coulomb friction coefficient, in [0, inf].
@@ -23,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 __all__ = [
+    "GAMMA_MAX",
     "gamma_from_nu",
     "gamma_dissimilar",
     "kappa_from_gamma",
@@ -32,15 +35,21 @@ __all__ = [
     "check_c",
     "check_n",
     "check_x",
+    "real_number",
+    "finite_array",
     "resolve_gamma",
 ]
 
 
-def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
-    """``value`` as a float array: real numbers only (no None, strings, complex or objects: TypeError naming
-    ``name``), and no NaN (ValueError)."""
+GAMMA_MAX = 0.75
+"""gamma at nu = -1, the supremum of gamma_from_nu over (-1, 1/2] and of |gamma_dissimilar| over all pairs."""
+
+
+def finite_array(value: ArrayLike, name: str) -> np.ndarray:
+    """``value`` as a float array: real numbers only (no None, strings, booleans, complex or objects: TypeError
+    naming ``name``), and no NaN (ValueError)."""
     raw = np.asarray(value) if value is not None else None
-    if raw is None or raw.dtype.kind not in "biuf":
+    if raw is None or raw.dtype.kind not in "iuf":
         raise TypeError(f"{name} must be a real number or an array of real numbers, got {value!r}")
     arr = raw.astype(float)
     if np.any(np.isnan(arr)):
@@ -50,27 +59,29 @@ def _finite_array(value: ArrayLike, name: str) -> np.ndarray:
 
 def check_nu(nu: ArrayLike) -> np.ndarray:
     """Return ``nu`` as a float array, raising ``ValueError`` unless -1 < nu <= 1/2."""
-    arr = _finite_array(nu, "nu")
+    arr = finite_array(nu, "nu")
     if np.any((arr <= -1.0) | (arr > 0.5)):
         raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 1/2], got {nu!r}")
     return arr
 
 
 def check_gamma(gamma: ArrayLike) -> np.ndarray:
-    """Return ``gamma`` as a float array, raising ``ValueError`` unless 0 <= gamma < 1.
+    """Return ``gamma`` as a float array, raising ``ValueError`` unless 0 <= gamma <= 3/4.
 
-    Values in (3/4, 1) arise only for dissimilar bodies (``gamma_dissimilar``);
-    gamma = 1 makes kappa infinite and is excluded.
+    No material reaches gamma = 3/4: gamma_from_nu(nu) < 3/4 for nu > -1, and |gamma_bar| < 3/4 for
+    every pair of bodies (``gamma_dissimilar``). The closed end 3/4, the limit nu -> -1, is accepted:
+    the problem is regular there (kappa = (2/pi) atanh(3/4)), and the tables are built up to it.
     """
-    arr = _finite_array(gamma, "gamma")
-    if np.any((arr < 0.0) | (arr >= 1.0)):
-        raise ValueError(f"gamma must lie in [0, 1), got {gamma!r}")
+    arr = finite_array(gamma, "gamma")
+    if np.any((arr < 0.0) | (arr > GAMMA_MAX)):
+        raise ValueError(f"gamma must lie in [0, 3/4] (no pair of materials with nu in (-1, 1/2] reaches |gamma| = 3/4), "
+                         f"got {gamma!r}")
     return arr
 
 
 def check_mu(mu: ArrayLike) -> np.ndarray:
     """Return ``mu`` as a float array, raising ``ValueError`` unless 0 <= mu <= inf."""
-    arr = _finite_array(mu, "mu")
+    arr = finite_array(mu, "mu")
     if np.any(arr < 0.0):
         raise ValueError(f"mu (friction coefficient) must be >= 0, got {mu!r}")
     return arr
@@ -78,15 +89,26 @@ def check_mu(mu: ArrayLike) -> np.ndarray:
 
 def check_c(c: ArrayLike) -> np.ndarray:
     """Return ``c`` as a float array, raising ``ValueError`` unless 0 < c <= 1."""
-    arr = _finite_array(c, "c")
+    arr = finite_array(c, "c")
     if np.any((arr <= 0.0) | (arr > 1.0)):
         raise ValueError(f"c (stick radius / contact radius) must lie in (0, 1], got {c!r}")
     return arr
 
 
+def real_number(value: object, name: str) -> float:
+    """``value`` as a float if it is one real number (a Python or numpy int or float, or a one-element array of
+    one); else a TypeError naming ``name`` (None, strings, booleans, complex numbers, objects, longer arrays)
+    or, for NaN, a ValueError."""
+    arr = finite_array(value, name)
+    if arr.size != 1:
+        raise TypeError(f"{name} must be a single number, got shape {arr.shape}")
+    return float(arr.reshape(()))
+
+
 def check_n(n: float) -> float:
-    """Return the power-law exponent ``n`` as a float, raising ``ValueError`` unless n > 0."""
-    value = float(n)
+    """Return the power-law exponent ``n`` as a float, raising ``ValueError`` unless n > 0 (TypeError unless a
+    real number)."""
+    value = real_number(n, "n")
     if not value > 0.0 or math.isinf(value):
         raise ValueError(f"n (power-law exponent of the indenter) must be finite and > 0, got {n!r}")
     return value
@@ -94,7 +116,7 @@ def check_n(n: float) -> float:
 
 def check_x(x: ArrayLike) -> np.ndarray:
     """Return ``x`` as a float array, raising ``ValueError`` unless 0 <= x <= 1 (radius over contact radius)."""
-    arr = _finite_array(x, "x")
+    arr = finite_array(x, "x")
     if np.any((arr < 0.0) | (arr > 1.0)):
         raise ValueError(f"x (radius over contact radius) must lie in [0, 1], got {x!r}")
     return arr
@@ -148,6 +170,10 @@ def gamma_dissimilar(G1: float, nu1: float, G2: float, nu2: float) -> float:
     says which body's surface moves inward relative to the other). A rigid indenter is
     the limit G2 -> inf, where gamma_bar -> gamma_from_nu(nu1).
 
+    |gamma_bar| < 3/4 always: with t_i = 1/G_i >= 0, gamma_bar = (a1 t1 - a2 t2)/(b1 t1 + b2 t2) with
+    a_i = (1 - 2 nu_i)/2 >= 0 and b_i = 1 - nu_i > 0, so |gamma_bar| <= (a1 t1 + a2 t2)/(b1 t1 + b2 t2)
+    <= max_i a_i/b_i = max_i gamma_from_nu(nu_i) < 3/4.
+
     Parameters
     ----------
     G1, G2 : float
@@ -180,5 +206,5 @@ def resolve_gamma(nu: float | None, gamma: float | None) -> float:
     if (nu is None) == (gamma is None):
         raise ValueError("give exactly one of nu (Poisson's ratio) or gamma (coupling constant)")
     if gamma is None:
-        return float(gamma_from_nu(nu))
-    return float(check_gamma(gamma))
+        return float(gamma_from_nu(real_number(nu, "nu")))
+    return float(check_gamma(real_number(gamma, "gamma")))

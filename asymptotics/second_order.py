@@ -304,7 +304,8 @@ F2_SMALL_C_ERROR = 0.01
 def _f2_over_f0(cs: np.ndarray) -> np.ndarray:
     ratio = np.empty(cs.shape)
     small = cs < C_MIN
-    ratio[small] = F2_SMALL_C_FIT[0] - F2_SMALL_C_FIT[1] / np.log(4.0 / cs[small])  # log(4/c) > 0 for c < 1
+    # log(4/c) > 0 for c < 1, as log 4 - log c: 4/c overflows for subnormal c
+    ratio[small] = F2_SMALL_C_FIT[0] - F2_SMALL_C_FIT[1] / (np.log(4.0) - np.log(cs[small]))
     ratio[~small] = _from_table(cs[~small], "F2_RATIO", lambda x: f2_quadrature(x) / float(mu_over_gamma(x)))
     return ratio
 
@@ -391,6 +392,8 @@ def stick_radius_second_order(mu: ArrayLike, nu: float | None = None, *,
     """
     g = resolve_gamma(nu, gamma)
     c0 = np.asarray(stick_radius_first_order(mu, gamma=g), dtype=float)
+    if g == 0.0:  # no coupling: c = 0 at mu = 0 and 1 above, at every order
+        return scalar_or_array(c0)
     try:
         f2(0.5)  # its generated table is imported on first use
     except ImportError as exc:

@@ -10,8 +10,8 @@ quantity is recorded in the generated module (``ERRORS``: relative for mu, c (re
 (``gap``, regions N and L); relative to max(1, |value|) for P*, p(0), A and C) and checked by
 ``tests/test_tables.py``.
 
-Run time: about 15 minutes on 2 cores (two processes; single-threaded BLAS, or the threads of the
-two processes fight over the cores):
+Run time: about 30 minutes on 2 cores (two processes; single-threaded BLAS, or the threads of the
+two processes fight over the cores), with a progress bar per region on a terminal:
 
     OPENBLAS_NUM_THREADS=1 python derivations/build_tables.py [--quick]
 """
@@ -30,6 +30,7 @@ import numpy as np
 from numeric import slip_limit
 from numeric.core import table
 from numeric.solutions.power_law import displacement_constant, indentation_constant
+from numeric.solutions.progress import tracked
 from numeric.solutions.solver import solve_given_c
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -134,9 +135,11 @@ def build_region(pool, name: str, size: tuple[int, int]) -> dict[str, list[np.nd
     xs = np.concatenate([lo + 0.5 * (chebyshev_points(n_x) + 1.0) * (hi - lo) for lo, hi in edges])
     rows = [[(name, u_at(region, x, g), float(g)) for x in xs] for g in gamma_at(region, ys)]
     if region.coordinate == "log_gap_ratio":  # x descending is 1 - c decreasing: continue along each row
-        results = [r for row in pool.map(sample_row, rows) for r in row]
+        results = [r for row in tracked(pool.map(sample_row, rows), len(rows), f"region {name}", unit="row")
+                   for r in row]
     else:
-        results = list(pool.map(sample, [p for row in rows for p in row], chunksize=2))
+        results = list(tracked(pool.map(sample, [p for row in rows for p in row], chunksize=2), len(rows) * len(xs),
+                               f"region {name}", unit="solve"))
     table_ = np.array([[r["stored"][k] for r in results] for k in out]).reshape(len(out), n_y, len(edges), n_x)
     for i, k in enumerate(out):
         out[k] = [coefficients(table_[i, :, j, :].T) for j in reversed(range(len(edges)))]
@@ -220,7 +223,7 @@ def check(pool, rng, path: Path, n_check: dict[str, int]) -> tuple[dict[str, flo
             worst[name] = where
         if where[1] >= SMALL_C and not value <= above[name]:
             above[name] = value
-    for point, ref in zip(points, pool.map(sample, points)):
+    for point, ref in zip(points, tracked(pool.map(sample, points), len(points), "check", unit="solve")):
         name, _, g = point
         where = (name, ref["c"], ref["gap"], g)
         tv = table.table_given_c(ref["c"], g, gap=ref["gap"])

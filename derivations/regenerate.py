@@ -18,7 +18,7 @@ deterministic (no timestamps), so a re-run leaves ``git diff`` empty.
 
 from __future__ import annotations
 
-import sys
+import argparse
 from pathlib import Path
 
 from numeric.app import cli
@@ -27,8 +27,17 @@ HERE = Path(__file__).resolve().parent
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``hertz-friction derivations --directory derivations/ ARGS``; returns the exit code."""
-    return cli.main(["derivations", "--directory", str(HERE), *(sys.argv[1:] if argv is None else argv)])
+    """``hertz-friction derivations --directory derivations/ [--fast] [--check]``; returns the exit code."""
+    parser = argparse.ArgumentParser(prog="python derivations/regenerate.py",
+                                     description="Regenerate the documents and figures of this folder "
+                                                 "(as hertz-friction derivations --directory derivations/).")
+    parser.add_argument("--fast", action="store_true", help="leave the solver-computed blocks and figures as committed")
+    parser.add_argument("--check", action="store_true", help="name the stale documents, write nothing (exit code 1)")
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --help (0) or a usage error (2), printed by argparse
+        return exc.code if isinstance(exc.code, int) else 2
+    return cli.main(["derivations", "--directory", str(HERE)] + ["--fast"] * args.fast + ["--check"] * args.check)
 
 
 if __name__ == "__main__":

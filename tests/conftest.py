@@ -6,9 +6,11 @@ import mpmath
 import pytest
 from hypothesis import settings
 
+# The default suite runs derandomised and bounded, so that it passes or fails the same way everywhere;
+# HYPOTHESIS_PROFILE=explore searches afresh with more examples (what a developer runs to look for new failures).
 settings.register_profile("ci", derandomize=True, max_examples=30, deadline=None)
-settings.register_profile("dev", max_examples=30, deadline=None)
-settings.load_profile("ci" if os.environ.get("CI") else "dev")
+settings.register_profile("explore", max_examples=300, deadline=None)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 @pytest.fixture(autouse=True)

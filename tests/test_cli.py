@@ -149,7 +149,7 @@ def test_table_csv_and_json(capsys, tmp_path):
     for r in rows:  # the Chebyshev table is an independent route (7e-12 in mu)
         assert float(r["c"]) == pytest.approx(float(stick_radius(float(r["mu"]), 0.25)), rel=1e-9)
         assert r["status"] == "ok"
-    assert "2/2 rows" in err
+    assert "table: 100%" in err and "2/2" in err  # a tqdm bar
     target = tmp_path / "t.json"
     code, out, err = run(capsys, ["table", "--mu", "0.2", "--nu", "0.25", "--format", "json", "--output", str(target)])
     data = json.loads(target.read_text())
@@ -241,3 +241,45 @@ def test_unwritable_output_and_missing_matplotlib_are_one_line_errors(capsys, mo
     code, out, err = run(capsys, ["figures", "--only", "fig2_chi0", "--output", str(tmp_path)])
     assert code == 2 and "pip install -e \".[plot]\"" in err and len(err.splitlines()) == 1
 
+
+
+def test_a_large_ball_contact_says_hertz_theory_no_longer_applies(capsys):
+    # the 5 mm ball at 1.5 MN on glass: a/R = 0.83 (numeric.app.contact.SMALL_STRAIN = 0.1), in the
+    # text as a last line and in the JSON as "warning", exit 0 (a result, with its caveat); 100 N says nothing
+    argv = ["sphere", "--radius", "0.005", "--load", "1.5e6", "--E", "70e9", "--nu", "0.22", "--mu", "0.3"]
+    code, out, err = run(capsys, argv)
+    assert code == 0 and err == ""
+    assert out.splitlines()[-1].startswith("warning: strain measure 0.854 (a/R for a sphere")
+    code, out, err = run(capsys, argv + ["--json"])
+    assert code == 0 and err == "" and "Hertz theory assumes small strains" in json.loads(out)["warning"]
+    code, out, _ = run(capsys, argv[:4] + ["100"] + argv[5:])
+    assert code == 0 and "warning" not in out
+
+
+def test_the_cone_angle_is_in_degrees_everywhere(capsys):
+    # --semi-angle-deg (and the old --semi-angle, which was degrees too) is what PowerLaw.cone takes
+    from numeric.app.contact import PowerLaw
+
+    base = ["--load", "1e-3", "--E", "70e9", "--nu", "0.22", "--mu", "0.3", "--json"]
+    outs = [run(capsys, ["cone", option, "70.3", *base]) for option in ("--semi-angle-deg", "--semi-angle")]
+    assert [code for code, _, _ in outs] == [0, 0] and outs[0][1] == outs[1][1]
+    indenter = json.loads(outs[0][1])["indenter"]
+    assert indenter["k"] == PowerLaw.cone(70.3).k == 1.0 / math.tan(math.radians(70.3))
+    assert indenter["description"] == "cone, semi-angle 70.3 deg"
+    code, out, err = run(capsys, ["cone", "--semi-angle-deg", "1.227", *base])  # 70.3 deg in radians
+    assert code == 2 and out == "" and "semi_angle_deg" in err and "radians?" in err
+
+
+def test_no_solution_is_said_as_such(capsys):
+    code, out, err = run(capsys, ["solve", "--nu", "0.5", "--c", "0.5"])
+    assert code == 1 and out == ""
+    assert err.startswith("hertz-friction solve: no solution: no friction coefficient gives stick radius c = 0.5 at "
+                          "gamma = 0") and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("argv", [["table", "--mu", "0.2", "--nu", "0.25", "--progress", "always", "--quiet"],
+                                  ["tables", "--quiet"]])
+def test_quiet_draws_no_progress_even_on_a_terminal(capsys, monkeypatch, argv):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    code, out, err = run(capsys, argv)
+    assert code == 0 and out and err == ""

@@ -6,14 +6,16 @@ Dundurs' beta in its kappa form, typed in independently of numeric.app.contact.
 """
 
 import math
+import warnings
 
 import numpy as np
 import pytest
 
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.materials import gamma_dissimilar, gamma_from_nu
-from numeric import flat_punch
-from numeric.app.contact import Elastic, FlatPunch, MaterialPair, PowerLaw, elastic, indent
+from numeric import flat_punch, power_law
+from numeric.app.contact import (SMALL_STRAIN, Elastic, FlatPunch, MaterialPair, PowerLaw, SmallStrainWarning, elastic,
+                                 indent)
 
 GLASS = dict(E=70e9, nu=0.22)
 STEEL = dict(E=210e9, nu=0.3)
@@ -80,7 +82,8 @@ def test_boussinesq_flat_punch():
 
 def test_sneddon_cone_frictionless():
     theta, delta = math.radians(70.3), 1e-6
-    s = indent(PowerLaw.cone(theta), elastic(**GLASS), mu=0.0, approach=delta)
+    with pytest.warns(SmallStrainWarning):  # delta/a = (pi/2) cot(70.3 deg) = 0.56
+        s = indent(PowerLaw.cone(70.3), elastic(**GLASS), mu=0.0, approach=delta)
     Es = e_star(GLASS)
     a = 2.0 * delta * math.tan(theta) / math.pi  # Sneddon: delta = (pi/2) a cot(theta)
     # A = pi/2 comes from the power-law quadrature, accurate to ~1e-14 on closed-form flat
@@ -211,7 +214,7 @@ def test_on_grid(glass_sphere):
     assert not g.pressure.flags.writeable
 
 
-@pytest.mark.parametrize("shape", [FlatPunch(2e-3), PowerLaw.sphere(0.02), PowerLaw(1.5, 30.0)])
+@pytest.mark.parametrize("shape", [FlatPunch(2e-3), PowerLaw.sphere(0.02), PowerLaw(1.5, 1.0)])  # strains 7e-5, 0.01, 0.02
 def test_round_trip_load_approach_load(shape):
     """Closed-form inversions of (2.4), (3.2) on the same dimensionless solution: rounding only."""
     first = indent(shape, elastic(**GLASS), mu=0.2, load=40.0, with_frictionless=False)
@@ -250,7 +253,8 @@ BODY = elastic(**GLASS)
     (lambda: PowerLaw(0.0, 1.0), "n "),
     (lambda: PowerLaw(-2.0, 1.0), "n "),
     (lambda: PowerLaw(2.0, 0.0), "k "),
-    (lambda: PowerLaw.cone(math.radians(30.0)), "semi_angle"),
+    (lambda: PowerLaw.cone(30.0), "semi_angle_deg"),
+    (lambda: PowerLaw.cone(math.radians(70.3)), r"semi_angle_deg .* got 1.22\d+ \(radians\? the angle is in degrees\)"),
     (lambda: elastic(E=-70e9, nu=0.2), "E "),
     (lambda: elastic(E=math.nan, nu=0.2), "E "),
     (lambda: elastic(G=0.0, nu=0.2), "G "),
@@ -277,3 +281,49 @@ def test_ratios_need_the_frictionless_solution():
         s.load_at(-1e-6)
     with pytest.raises(ValueError, match="load"):
         s.approach_at(0.0)
+
+
+# --- the small-strain range of Hertz theory -------------------------------------------------------
+
+@pytest.mark.parametrize("load, warns", [(100.0, False), (1.5e6, True)])
+def test_small_strain_limit_warns(load, warns):
+    # a 5 mm ball on glass: frictionless Hertz a = (3PR/4E*)^(1/3), delta = a^2/R, so delta/a = a/R is the
+    # strain measure (the mean pressure/E* = 4a/(3 pi R) is smaller); closed forms of cube roots and products: 1e-12
+    R = 0.005
+    a = (3.0 * load * R / (4.0 * e_star(GLASS))) ** (1.0 / 3.0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        s = indent(PowerLaw.sphere(R), elastic(**GLASS), mu=0.0, load=load)
+    assert s.strain == pytest.approx(a / R, rel=EXACT)
+    assert [w.category for w in caught] == ([SmallStrainWarning] if warns else [])
+    assert (s.strain > SMALL_STRAIN) == warns
+    if warns:  # the issue's 1.5 MN: a/R = 0.83; the message says what and why, once (not again for the reference)
+        assert a / R == pytest.approx(0.849, abs=1e-3)  # 0.83 with mu = 0.3
+        assert "a/R for a sphere" in str(caught[0].message) and "Hertz theory assumes small strains" in str(caught[0].message)
+        assert s.to_dict()["warning"] == str(caught[0].message)
+    else:
+        assert "warning" not in s.to_dict()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        indent(PowerLaw.sphere(R), elastic(**GLASS), mu=0.3, load=load)  # with its frictionless reference
+    assert len(caught) == int(warns)
+
+
+@pytest.mark.parametrize("nu", [0.22, 0.45])
+def test_stresses_shown_at_high_friction_are_that_friction_s(nu):
+    # the issue read the stresses at mu = 1e4 as another mu's: they are this mu's solution (q = mu p on the slip
+    # annulus; at nu = 0.45, 1 - c ~ 1e-23 is below what the stresses resolve and the route says they are the
+    # adhesive ones), and the maxima shown are at least those of a scan (1001 points plus the annulus), to the
+    # zoom's 1e-14; they agree with mu = inf to 6 digits because the stick zone saturates (c_max, 1 - c = 1.6e-5)
+    s = indent(PowerLaw.sphere(0.005), elastic(**GLASS | {"nu": nu}), mu=1e4, load=100.0)
+    h = power_law(2, nu=nu, mu=1e4)
+    assert s.c == h.c
+    x = np.unique(np.concatenate([np.linspace(0.0, 1.0, 1001), h.c + (1.0 - h.c) * np.linspace(0.0, 1.0, 21)]))
+    scale = s.materials.modulus * s.approach / s.contact_radius  # (2.1)
+    assert s.max_shear >= scale * np.max(np.abs(h.shear(x))) * (1 - 1e-14)
+    assert s.max_pressure >= scale * np.max(h.pressure(x)) * (1 - 1e-14)
+    if h.flat.route.startswith("solver"):
+        annulus = h.c + (1.0 - h.c) * np.array([0.25, 0.5, 0.75])
+        np.testing.assert_allclose(h.flat.shear(annulus), 1e4 * h.flat.pressure(annulus), rtol=1e-12)  # (2.8)
+    else:
+        assert h.flat.route.startswith("adhesive stresses")

@@ -133,3 +133,18 @@ def test_error_covers_the_round_off_at_small_c_everywhere(nu):
         for level in (2, 3):
             s = solve_given_c(nu, c, g, level)
             assert abs(s.mu - s4.mu) <= s.error
+
+
+@pytest.mark.parametrize("ratio", [0.5, 1.0, 3.0])
+def test_vanishing_gamma_takes_the_law_and_agrees_with_the_solver(ratio):
+    # below gamma = 1e-100 the solver's kernels lose gamma^2 to underflow (it returned c = 6.5e-49 for 0.485 at
+    # gamma = 1e-300, mu/gamma = 1/2, and overflowed at 1e-200); the law, exact to O(gamma^2), answers there. The
+    # solver at gamma = 1e-30 (its level-2 error ~1e-12, an independent discretisation) gives the same c.
+    solver = flat_punch(gamma=1e-30, mu=ratio * 1e-30)
+    assert solver.route.startswith("solver")
+    for g in (1e-120, 1e-300, 1e-310):
+        law = flat_punch(gamma=g, mu=ratio * g)
+        assert law.route.startswith("asymptotic") and "exact to rounding" in law.route
+        assert law.c == pytest.approx(solver.c, rel=0, abs=solver.error + 1e-15)
+        back = flat_punch(gamma=g, c=law.c)
+        assert back.mu == pytest.approx(ratio * g, rel=1e-14)  # the law inverted both ways: rounding of f0 (~10 ops)

@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 from asymptotics.adhesive import pressure_adhesive_mp, shear_adhesive_mp
+from asymptotics.derivation import rounding_bound
 from asymptotics.first_order import mu_over_gamma
 from asymptotics.materials import gamma_dissimilar
 from numeric import NoEigenvalueError, flat_punch, friction_coefficient, stick_radius
@@ -53,13 +54,15 @@ def test_frictionless_limit_mu_zero():
 def test_adhesive_limit_closed_forms(kwargs):
     # mu = inf or c = 1: the stresses of (B3) against direct mpmath quadrature of (B3) at 30
     # digits; 1e-13 relative is the accuracy of the 160-point Gauss rule used by the closed
-    # form (measured worst 4e-14, tests/test_adhesive.py). P* = atanh(gamma)/gamma (B4) to
-    # 2 ulp (np.arctanh vs math.atanh).
+    # form (measured worst 4e-14, tests/test_adhesive.py). P* = atanh(gamma)/gamma (B4) against mpmath to the
+    # rounding of np.arctanh(gamma)/gamma (one call, one division: rounding_bound(1, 1) = 1.1e-15).
     nu = 0.25
     g = _gamma(nu)
     s = flat_punch(nu=nu, **kwargs)
     assert s.c == 1.0 and s.mu == math.inf
-    assert s.compliance == pytest.approx(math.atanh(g) / g, rel=5e-16)
+    with mpmath.workdps(30):
+        exact = float(mpmath.atanh(mpmath.mpf(g)) / g)
+    assert s.compliance == pytest.approx(exact, rel=rounding_bound(1, 1))
     x = np.array([0.0, 0.3, 0.9, 0.999])
     p_ref = np.array([float(pressure_adhesive_mp(v, g)) for v in x])
     q_ref = np.array([float(shear_adhesive_mp(v, g)) for v in x])
@@ -68,14 +71,27 @@ def test_adhesive_limit_closed_forms(kwargs):
 
 
 def test_incompressible_limit_has_no_coupling():
-    # nu = 1/2: gamma = 0 decouples (2.2): q = 0 and p is frictionless for any mu; the
-    # eigenvalue relation (2.28) mu = gamma f0(c) gives mu = 0 for every c.
+    # nu = 1/2: gamma = 0 decouples (2.2): q = 0 and p is frictionless for any mu, and nothing slips (c = 1).
+    # pressure: (2/pi)/sqrt((1 - x)(1 + x)) both sides, the same 4 correctly rounded operations: 1e-15 is 4.5 eps
     s = flat_punch(nu=0.5, mu=0.3)
     x = np.array([0.0, 0.5, 0.99])
-    assert s.gamma == 0.0 and s.compliance == 1.0
+    assert s.gamma == 0.0 and s.compliance == 1.0 and s.c == 1.0
     np.testing.assert_allclose(s.pressure(x), 2 / np.pi / np.sqrt((1 - x) * (1 + x)), rtol=1e-15, atol=0)
     assert np.all(s.shear(x) == 0.0)
-    assert flat_punch(nu=0.5, c=0.5).mu == 0.0
+
+
+@pytest.mark.parametrize("kwargs", [dict(nu=0.5), dict(gamma=0.0), dict(nu=0.5, rtol=1e-3)])
+def test_no_friction_coefficient_gives_a_partial_stick_zone_without_coupling(kwargs):
+    # given mu at gamma = 0, c = 1 for every mu > 0 and c = 0 at mu = 0; so given c in (0, 1) there is no mu
+    # (mu = gamma f0(c) (2.28) -> 0 as gamma -> 0, but mu = 0 itself gives c = 0): the error says so, and c = 1
+    # answers mu = inf, whose c is 1 again
+    assert [flat_punch(mu=mu, **kwargs).c for mu in (0.0, 1e-300, 0.3, math.inf)] == [0.0, 1.0, 1.0, 1.0]
+    for c in (1e-300, 0.5, 1.0 - 1e-16):
+        with pytest.raises(NoEigenvalueError, match="at gamma = 0 .*c = 1 for every mu > 0"):
+            flat_punch(c=c, **kwargs)
+    with pytest.raises(NoEigenvalueError, match="at gamma = 0"):
+        friction_coefficient([0.5, 1.0], 0.5)
+    assert flat_punch(c=1.0, **kwargs).mu == math.inf
 
 
 # ---------------------------------------------------------------------------------------

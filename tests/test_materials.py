@@ -4,9 +4,12 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from asymptotics.materials import (
     check_c,
+    check_gamma,
     check_mu,
     check_n,
     gamma_dissimilar,
@@ -14,6 +17,7 @@ from asymptotics.materials import (
     kappa_from_gamma,
     resolve_gamma,
 )
+from numeric import flat_punch, largest_stick_radius
 
 
 def test_gamma_exact_values():
@@ -73,3 +77,27 @@ def test_bad_nu_is_rejected(nu):
 def test_bad_inputs_name_the_argument(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+NU = st.floats(-1.0, 0.5, exclude_min=True)
+MODULUS = st.floats(1e-300, 1e300)
+
+
+@given(nu1=NU, nu2=NU, G1=MODULUS, G2=st.one_of(MODULUS, st.just(math.inf)))
+def test_no_pair_of_materials_reaches_three_quarters(nu1, nu2, G1, G2):
+    # |gamma_bar| <= max_i gamma_from_nu(nu_i) < 3/4 (proof in gamma_dissimilar): checked against the bound itself,
+    # which rounding may put at 3/4 only as nu -> -1 (gamma_from_nu(-1 + 1e-16) rounds to 0.75)
+    g = gamma_dissimilar(G1, nu1, G2, nu2)
+    assert abs(g) <= max(gamma_from_nu(nu1), gamma_from_nu(nu2)) * (1 + 4 * np.finfo(float).eps)
+    assert abs(g) <= 0.75
+    check_gamma(abs(g))  # so every material pair's |gamma_bar| is accepted
+
+
+@pytest.mark.parametrize("gamma", [0.7500000000000001, 0.9, 1.0 - 1e-16])
+def test_gamma_beyond_three_quarters_is_rejected(gamma):
+    # no material reaches it: ValueError naming gamma, from the checks and from the solvers that take gamma
+    for call in (check_gamma, kappa_from_gamma, lambda g: flat_punch(gamma=g, mu=0.3),
+                 lambda g: largest_stick_radius(gamma=g)):
+        with pytest.raises(ValueError, match=r"^gamma must lie in \[0, 3/4\]"):
+            call(gamma)
+    assert float(check_gamma(0.75)) == 0.75  # the limit nu -> -1, where the tables end, is accepted

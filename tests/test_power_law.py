@@ -290,3 +290,32 @@ def test_constants_next_to_full_stick_are_the_adhesive_ones():
     flat = solve_given_c(None, 1.0 - 1e-9, gamma, 2, gap=1e-9)
     assert 1e-12 < abs(indentation_constant(flat, 2.0) - A_ad) < 1e-9
     assert 1e-12 < abs(displacement_constant(flat, 2.0) - C_ad) < 1e-9
+
+
+def test_C_says_how_good_it_is_and_warns_where_n_has_eaten_its_digits():
+    # u = C x^n on the stick zone is a difference of two integrals over x^n: at nu = 0.3, mu = 0.3 (c = 0.896) it
+    # was -0.1145 at n = 14 and -1894 at n = 16, silently. C_error is the change of C between x = c/2 and c/4
+    # (the true C does not depend on x): small at n = 2, and above C_RTOL, with an AccuracyWarning, at n = 16
+    good = pl.power_law(2, nu=0.3, mu=0.3)
+    assert good.C_error < 1e-11 and good.C == pytest.approx(pl.displacement_constant(good.flat, 2, x=0.7 * good.c),
+                                                          rel=1e-11)
+    bad = pl.power_law(16, nu=0.3, mu=0.3)
+    with pytest.warns(pl.AccuracyWarning, match="good to .* relative only"):
+        bad.C
+    assert bad.C_error > pl.C_RTOL
+
+
+@pytest.mark.parametrize("n", [0.0, 5e-324, 150.0, 1e6])
+def test_exponents_outside_the_validated_range_are_refused(n):
+    # above n = 100 the quadratures lose digits (the frictionless pressure 5 % off at n = 1000), below 1e-300
+    # A ~ 1/n overflows
+    with pytest.raises(ValueError, match="^n "):
+        pl.power_law(n, nu=0.3, mu=0.3)
+
+
+def test_subnormal_radii():
+    # for n >= 1.05 the centre value, from which p(x) differs by x^(n-1) < 5e-16; below, refused (p ~ x^(n-1))
+    h = pl.power_law(2, nu=0.3, mu=0.3)
+    assert float(h.pressure(5e-324)) == float(h.pressure(0.0))
+    with pytest.raises(ValueError, match="^x must be 0 or a normal double"):
+        pl.power_law(1.0, nu=0.3, mu=0.3).pressure(5e-324)

@@ -36,7 +36,7 @@ from sympy import (Eq, Function, Integral, Rational, S, Symbol, Tuple, atanh, be
                    elliptic_k, expand_func, gamma, gammasimp, hyper, hyperexpand, log, pi,
                    simplify, sqrt, symbols)
 
-from ..derivation import Comparison, Derivation, Identity, Step
+from ..derivation import Comparison, Derivation, Identity, Step, rounding_bound
 from .precision import at_precision, exact
 from ..similarity import (a_star_factor, c_star_factor, central_pressure_ratio, compliance_ratio,
                          frictionless_pressure_power_law)
@@ -454,7 +454,7 @@ def _d317() -> Derivation:
         fast=compliance_ratio,
         precise=at_precision(lambda n_: n_ / (n_ + 1)),
         arguments=("n",),
-        comparison=Comparison(points=((0.5,), (1.0,), (2.0,), (3.0,)), rtol=1e-15),
+        comparison=Comparison(points=((0.5,), (1.0,), (2.0,), (3.0,)), rtol=rounding_bound(2)),  # n/(n + 1)
         note=("Swapping the order is the integration by parts of the paper. fast/precise give P*/P0*. "
               "Section 4.2's reference (1.28) means (3.17) (errata)."),
     )
@@ -483,7 +483,7 @@ def _d318() -> Derivation:
         fast=central_pressure_ratio,
         precise=at_precision(lambda n_: n_ / (n_ - 1)),
         arguments=("n",),
-        comparison=Comparison(points=((1.5,), (2.0,), (3.0,), (10.0,)), rtol=1e-15),
+        comparison=Comparison(points=((1.5,), (2.0,), (3.0,), (10.0,)), rtol=rounding_bound(2)),  # n/(n - 1)
         note="fast/precise give p(0)/p0(0). For n <= 1 p is unbounded at x = 0.",
     )
 
@@ -523,7 +523,9 @@ def _d319() -> Derivation:
         fast=lambda x_: frictionless_pressure_power_law(x_, 2.0),
         precise=at_precision(lambda x_: 4 / mpmath.pi * mpmath.sqrt((1 - x_) * (1 + x_))),
         arguments=("x",),
-        comparison=Comparison(points=((0.0,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)), rtol=1e-15),
+        # the costlier branch (x^2 < 1/2): x^(n-1), beta, hyp2f1 and 8 operations, no cancellation at n = 2
+        comparison=Comparison(points=((0.0,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)),
+                              rtol=rounding_bound(8, 3)),
         note="The classical Hertz pressure; A = 1 as the paper says.",
     )
 
@@ -555,7 +557,9 @@ def _d320() -> Derivation:
         fast=lambda x_: frictionless_pressure_power_law(x_, 1.0),
         precise=at_precision(lambda x_: 2 / mpmath.pi * mpmath.log((1 + mpmath.sqrt((1 - x_) * (1 + x_))) / x_)),
         arguments=("x",),
-        comparison=Comparison(points=((1e-300,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)), rtol=1e-15),
+        # log1p(sqrt((1 - x)(1 + x))) - log(x): 2 calls, 7 operations, a sum of positive terms (log x < 0)
+        comparison=Comparison(points=((1e-300,), (1e-9,), (0.3,), (0.7,), (0.9,), (1 - 1e-12,), (1.0,)),
+                              rtol=rounding_bound(7, 2)),
         note="A = pi/2 for the smooth cone (A* = 1 in (3.5)); p diverges logarithmically at the apex.",
     )
 

@@ -6,8 +6,9 @@ and the studies: ``figures``, ``bench``, ``stability``, ``derivations`` (the com
 and ``tables`` (the paper's tables). ``hertz-friction CMD --help`` describes each.
 
 Exit codes: 0 success; 2 bad usage or bad input (argparse's convention; the message, naming
-the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``,
-``NoEigenvalueError``; for ``table``, any failed row, the others still being written).
+the input, goes to stderr without a traceback); 1 numerical failure (``SolverError``) or no
+solution (``NoEigenvalueError``: no friction coefficient gives the stick radius asked for); for
+``table``, any failed row, the others still being written.
 """
 
 from __future__ import annotations
@@ -15,10 +16,12 @@ from __future__ import annotations
 import argparse
 import csv
 import io
+import itertools
 import json
 import math
 import re
 import sys
+import warnings
 from pathlib import Path
 
 _PREFIXES = {-12: "p", -9: "n", -6: "u", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
@@ -59,7 +62,7 @@ def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="hertz-friction",
         description="Hertz contact with finite friction (D. A. Spence, J. Elasticity 5 (1975) 297-319).",
-        epilog="Exit codes: 0 ok, 1 numerical failure, 2 bad usage or input.",
+        epilog="Exit codes: 0 ok, 1 numerical failure or no solution, 2 bad usage or input.",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     _physical_parsers(commands)
@@ -79,8 +82,9 @@ def _physical_parsers(commands) -> None:
     p.add_argument("--radius", type=float, required=True, help="punch radius a, m")
     _material_args(p)
     p = commands.add_parser("cone", help="a cone z = r cot(theta)", description=phys.format(what="a cone"))
-    p.add_argument("--semi-angle", type=float, required=True, metavar="DEG",
-                   help="semi-angle theta at the apex, degrees, in (45, 90) (e.g. 70.3: Berkovich-equivalent)")
+    p.add_argument("--semi-angle-deg", "--semi-angle", type=float, required=True, metavar="DEG", dest="semi_angle_deg",
+                   help="semi-angle theta at the apex, degrees, in (45, 90) (e.g. 70.3: Berkovich-equivalent); "
+                        "the same unit as PowerLaw.cone")
     _material_args(p)
     p = commands.add_parser("power-law", help="a body z = k r^n or z = r^n/(n b^(n-1))",
                             description=phys.format(what="a power-law body z = k r^n"))
@@ -118,7 +122,19 @@ def _table_parser(commands) -> None:
     p.add_argument("--sphere", action="store_true", help="add the sphere's A (3.2), C (3.4) and P* (3.17)")
     p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4), help="solver level (default 2)")
     p.add_argument("--progress", choices=("auto", "always", "never"), default="auto",
-                   help="row counter on stderr (auto: when stderr is a terminal)")
+                   help="progress bar with time to go on stderr (auto: when stderr is a terminal)")
+    _quiet_arg(p)
+
+
+def _quiet_arg(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--quiet", action="store_true", help="no progress on stderr (shown by default on a terminal)")
+
+
+def _progress(args) -> bool | str:
+    """The ``progress`` of numeric.solutions.progress for the options given: --quiet, else --progress, else auto."""
+    if args.quiet:
+        return False
+    return {"auto": "auto", "always": True, "never": False}[getattr(args, "progress", "auto")]
 
 
 def _study_parsers(commands) -> None:
@@ -128,6 +144,7 @@ def _study_parsers(commands) -> None:
                    help="file format, repeatable (default png)")
     p.add_argument("--only", action="append", metavar="NAME", dest="names",
                    help="only this figure (a key of numeric.studies.figure_plots.FIGURES), repeatable")
+    _quiet_arg(p)
     p = commands.add_parser("bench", help="the benchmark: error against run time of every method",
                             description="Run time against error of every method for the flat punch and the sphere "
                                         "(numeric.studies.bench); writes benchmark.md and benchmark.png.")
@@ -136,6 +153,7 @@ def _study_parsers(commands) -> None:
                    help="directory for benchmark.md and benchmark.png (default: derivations/ for the full run; "
                         "the quick run only prints unless given)")
     p.add_argument("--no-plot", action="store_true", help="do not draw benchmark.png")
+    _quiet_arg(p)
     p = commands.add_parser("stability", help="the stability study: parameter sweep, honesty of error, round-off",
                             description="Stress tests of numerical stability (numeric.studies.stability); writes "
                                         "stability.md.")
@@ -149,11 +167,12 @@ def _study_parsers(commands) -> None:
     p.add_argument("--check", action="store_true", help="compare with the committed files instead of writing")
     p.add_argument("--directory", type=Path, default=None,
                    help="the derivations folder (default: derivations/ of the source checkout)")
-    commands.add_parser(
+    p = commands.add_parser(
         "tables", help="print the tables of Spence (1975) beside our recomputation and the exact values",
         description="Print the paper's tables (the mesh and nu tables of §4, mu(c) of §4.2, 1/A of the sphere) "
                     "beside the paper's own scheme rerun and the full solution (numeric.studies.paper_tables; "
                     "the same as derivations/paper_tables.md). Takes about half a minute.")
+    _quiet_arg(p)
 
 
 def _elastic_bodies(args):
@@ -177,18 +196,20 @@ def _shape(args):
     if args.command == "punch":
         return FlatPunch(args.radius)
     if args.command == "cone":
-        return PowerLaw.cone(math.radians(args.semi_angle))
+        return PowerLaw.cone(args.semi_angle_deg)
     if args.b is not None:
         return PowerLaw.from_length(args.n, args.b)
     return PowerLaw(args.n, args.k)
 
 
 def _run_physical(args) -> int:
-    from numeric.app.contact import indent
+    from numeric.app.contact import SmallStrainWarning, indent
 
     half, indenter = _elastic_bodies(args)
-    contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
-                     level=args.level)
+    with warnings.catch_warnings():  # said in the output instead (text: a last line; JSON: "warning")
+        warnings.simplefilter("ignore", SmallStrainWarning)
+        contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
+                         level=args.level)
     if args.json:
         sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
     else:
@@ -198,6 +219,8 @@ def _run_physical(args) -> int:
 
 def _describe(s) -> str:
     """The contact as a human-readable table with units."""
+    from numeric.app.contact import SMALL_STRAIN, small_strain_message
+
     pair = s.materials
     hs = pair.half_space
     body = "rigid" if pair.indenter is None else \
@@ -234,6 +257,8 @@ def _describe(s) -> str:
     lines += ["", f"stick fraction c = {s.c:.9g}, P* = {s.compliance:.9g} (flat punch P0* = {s.flat_compliance:.9g})"
               + ("" if s.A is None else f", A = {s.A:.9g}"),
               f"route: {s.route}; estimated absolute error of c and P*: {s.error:.1e}"]
+    if s.strain > SMALL_STRAIN:
+        lines.append(f"warning: {small_strain_message(s.strain)}")
     return "\n".join(lines) + "\n"
 
 
@@ -289,6 +314,7 @@ def _run_table(args) -> int:
     from asymptotics.materials import check_mu, check_nu
 
     from numeric import NoEigenvalueError, SolverError, flat_punch, power_law
+    from numeric.solutions.progress import progress_bar
 
     mus = _parse_range(args.mu, "mu")
     nus = _parse_range(args.nu, "nu")
@@ -298,11 +324,10 @@ def _run_table(args) -> int:
         check_mu(m)
     for v in nus:
         check_nu(v)
-    show = args.progress == "always" or (args.progress == "auto" and sys.stderr.isatty())
     total = len(mus) * len(nus)
     rows, failed = [], 0
-    for nu in nus:
-        for mu in mus:
+    with progress_bar(total, "table", _progress(args), unit="row") as bar:
+        for nu, mu in itertools.product(nus, mus):
             row = {"nu": nu, "gamma": None, "mu": mu, "c": None, "compliance": None, "error": None, "route": None}
             if args.sphere:
                 row.update({"sphere_A": None, "sphere_C": None, "sphere_compliance": None})
@@ -320,11 +345,7 @@ def _run_table(args) -> int:
                 failed += 1
                 row["status"] = f"failed: {err}"
             rows.append(row)
-            if show:
-                sys.stderr.write(f"\rtable: {len(rows)}/{total} rows")
-                sys.stderr.flush()
-    if show:
-        sys.stderr.write("\n")
+            bar.update()
     text = _format_rows(rows, args.format)
     if args.output:
         with open(args.output, "w", encoding="utf-8", newline="") as handle:
@@ -352,7 +373,8 @@ def _format_rows(rows: list[dict], fmt: str) -> str:
 def _run_figures(args) -> int:
     from numeric.studies.figure_plots import write_figures
 
-    paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names)
+    paths = write_figures(args.output, formats=tuple(args.formats or ("png",)), names=args.names,
+                          progress=_progress(args))
     for path in paths:
         sys.stdout.write(f"{path}\n")
     return 0
@@ -378,7 +400,8 @@ def _run_bench(args) -> int:
     from numeric.studies.documents import source_derivations
 
     output = args.output if args.output is not None or args.quick else source_derivations()
-    result = bench.run(bench.QUICK if args.quick else bench.FULL, progress=lambda message: print(message, file=sys.stderr))
+    report = (lambda message: None) if args.quiet else (lambda message: print(message, file=sys.stderr))
+    result = bench.run(bench.QUICK if args.quick else bench.FULL, progress=report)
     text = render(result)
     if output is not None:
         output.mkdir(parents=True, exist_ok=True)
@@ -418,7 +441,7 @@ def _run_derivations(args) -> int:
 def _run_tables(args) -> int:
     from numeric.studies.paper_tables import render
 
-    sys.stdout.write(render() + "\n")
+    sys.stdout.write(render(progress=_progress(args)) + "\n")
     return 0
 
 
@@ -465,7 +488,10 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write(f"hertz-friction {args.command}: error: {err.name or err} is needed here; "
                          "install it with pip install -e \".[plot]\"\n")
         return 2
-    except (SolverError, NoEigenvalueError) as err:
+    except NoEigenvalueError as err:  # the input has no solution (c above c_max, or c < 1 at gamma = 0)
+        sys.stderr.write(f"hertz-friction {args.command}: no solution: {err}\n")
+        return 1
+    except SolverError as err:
         sys.stderr.write(f"hertz-friction {args.command}: numerical failure: {err}\n")
         return 1
 

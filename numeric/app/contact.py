@@ -94,13 +94,22 @@ Other codes' parameters
 Input checks
 ------------
 Loads, approaches, lengths and moduli must be finite and > 0, -1 < nu <= 1/2, mu >= 0 (inf
-allowed: full stick), n > 0, exactly one of load and approach, exactly one of E and G.
-Units are not guessed from magnitudes (soft gels have E ~ 1 kPa, so no bound on E alone is
-safe); instead the result must be within the linear half-space theory: the strain measure
-max(delta/a, surface slope at the contact edge, mean pressure / E*) must be below 1,
-else a ``ValueError`` names the load (or approach) and suggests checking the units. A
-modulus given in GPa or MPa by mistake (E = 70 for 70 GPa) trips this check; not every slip
-can be caught (a radius given in mm makes the contact milder, not impossible).
+allowed: full stick), n > 0, exactly one of load and approach, exactly one of E and G; the
+cone's semi-angle is in degrees, in (45, 90). Units are not guessed from magnitudes (soft gels
+have E ~ 1 kPa, so no bound on E alone is safe); instead the result must be within the linear
+half-space theory. Its strain measure ``Contact.strain`` = max(delta/a, surface slope at the
+contact edge, mean pressure / E*) (for a sphere the slope is a/R, and delta/a = a/R too):
+
+* above ``STRAIN_LIMIT`` = 1 the input is rejected, a ``ValueError`` naming the load (or
+  approach) and suggesting to check the units. A modulus given in GPa or MPa by mistake
+  (E = 70 for 70 GPa) trips this check; not every slip can be caught (a radius given in mm
+  makes the contact milder, not impossible);
+* above ``SMALL_STRAIN`` = 0.1 the result comes with a ``SmallStrainWarning``: Hertz theory
+  treats both bodies as linear elastic half-spaces with small surface slopes, and its error
+  grows in proportion to the strain measure (Johnson, *Contact Mechanics*, §4.2: a << R). A 5 mm
+  ball at 1.5 MN on glass has a/R = 0.83: a number, but not a physical answer. A cone's
+  strain does not depend on the load but on its angle (delta/a = A cot theta, A ~ pi/2: 0.56 at
+  the Berkovich-equivalent 70.3 deg), so cones sharper than about 86 deg always warn.
 
 References
 ----------
@@ -111,13 +120,14 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from asymptotics.arrays import read_only, scalar_or_array
-from asymptotics.materials import check_mu, check_n, check_nu, gamma_dissimilar
+from asymptotics.materials import check_mu, check_n, check_nu, finite_array, gamma_dissimilar, real_number
 
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import PowerLawSolution, power_law
@@ -134,20 +144,26 @@ __all__ = [
     "Contact",
     "GridSolution",
     "indent",
+    "small_strain_message",
+    "SmallStrainWarning",
+    "SMALL_STRAIN",
     "STRAIN_LIMIT",
 ]
 
 STRAIN_LIMIT = 1.0  # strain measure (delta/a, edge slope, mean pressure/E*) above which input is rejected
+SMALL_STRAIN = 0.1  # ... above which Hertz theory no longer applies (a/R < 0.1 for a sphere): a warning
+
+
+class SmallStrainWarning(UserWarning):
+    """The contact's strain measure (``Contact.strain``: a/R for a sphere) exceeds ``SMALL_STRAIN``: the result is
+    that of the linear half-space theory, whose error grows like the strain."""
 _GRID = np.linspace(0.0, 1.0, 257)  # search grid in x = r/a for the maxima, then zoomed
 _ZOOMS = 4
 
 
 def _positive(value: float, name: str, what: str) -> float:
-    """``value`` as a float, raising ValueError naming it unless finite and > 0."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} ({what}) must be a number, got {value!r}") from None
+    """``value`` as a float, raising ValueError naming it unless finite and > 0 (TypeError unless a number)."""
+    v = real_number(value, name)
     if not (math.isfinite(v) and v > 0.0):
         raise ValueError(f"{name} ({what}) must be finite and > 0, got {value!r}")
     return v
@@ -170,7 +186,7 @@ class Elastic:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "G", _positive(self.G, "G", "shear modulus, Pa"))
-        object.__setattr__(self, "nu", float(check_nu(self.nu)))
+        object.__setattr__(self, "nu", float(check_nu(real_number(self.nu, "nu"))))
 
     @property
     def E(self) -> float:
@@ -191,9 +207,9 @@ def elastic(*, nu: float, E: float | None = None, G: float | None = None, prefix
     if (E is None) == (G is None):
         raise ValueError(f"give exactly one of {prefix}E (Young's modulus) or {prefix}G (shear modulus)")
     try:
-        nu_value = float(check_nu(nu))
-    except ValueError as err:
-        raise ValueError(f"{prefix}{err}") from None
+        nu_value = float(check_nu(real_number(nu, "nu")))
+    except (ValueError, TypeError) as err:
+        raise type(err)(f"{prefix}{err}") from None
     if G is None:
         G = _positive(E, f"{prefix}E", "Young's modulus, Pa") / (2.0 * (1.0 + nu_value))
     return Elastic(_positive(G, f"{prefix}G", "shear modulus, Pa"), nu_value)
@@ -313,17 +329,21 @@ class PowerLaw:
         return cls(2.0, 0.5 / R, f"sphere, radius {R:.6g} m")
 
     @classmethod
-    def cone(cls, semi_angle: float) -> PowerLaw:
-        """A cone of semi-angle theta at the apex (radians), z = r cot(theta): n = 1.
+    def cone(cls, semi_angle_deg: float) -> PowerLaw:
+        """A cone of semi-angle theta at the apex, in degrees, z = r cot(theta): n = 1.
 
-        The half-space theory needs a small surface slope, theta close to pi/2 ([S75] after
-        (3.19)); 45 deg < theta < 90 deg is accepted (e.g. 70.3 deg, the Berkovich-equivalent cone).
+        Degrees, as on the command line (``--semi-angle-deg``) and as indenters are specified. The
+        half-space theory needs a small surface slope, theta close to 90 deg ([S75] after (3.19));
+        45 < theta < 90 is accepted (e.g. 70.3, the Berkovich-equivalent cone, whose strain measure
+        delta/a = 0.56 is above ``SMALL_STRAIN``, so ``indent`` warns). An angle in radians falls
+        below 45 and is refused, not misread.
         """
-        theta = float(semi_angle)
-        if not (math.pi / 4 < theta < math.pi / 2):
-            raise ValueError(f"semi_angle (cone semi-angle at the apex) must lie in (45, 90) degrees, got "
-                             f"{math.degrees(theta):.6g} degrees")
-        return cls(1.0, 1.0 / math.tan(theta), f"cone, semi-angle {math.degrees(theta):.6g} deg")
+        theta = real_number(semi_angle_deg, "semi_angle_deg")
+        if not 45.0 < theta < 90.0:
+            hint = " (radians? the angle is in degrees)" if 0.0 < theta <= 0.5 * math.pi else ""
+            raise ValueError(f"semi_angle_deg (cone semi-angle at the apex) must lie in (45, 90) degrees, got "
+                             f"{semi_angle_deg!r}{hint}")
+        return cls(1.0, 1.0 / math.tan(math.radians(theta)), f"cone, semi-angle {theta:.6g} deg")
 
     @classmethod
     def from_length(cls, n: float, b: float) -> PowerLaw:
@@ -407,13 +427,17 @@ class Contact:
     max_pressure, max_pressure_radius : float
         Largest pressure (Pa) and where (m); inf for a flat punch (at r = a) and for n <= 1 (at r = 0).
     max_shear : float
-        Largest magnitude of the shear traction, Pa (0 without friction or coupling). For a
+        Largest magnitude of the shear traction, Pa (0 without friction or coupling; inf for a flat punch
+        with friction, at r = a, like the pressure). For a
         cone (n = 1) (3.13) gives q(0) = int_0^1 q0(t)/t dt > 0: the radial shear jumps at the
         apex (like the logarithmic pressure (3.20)), and for n < 1 it is infinite there.
     max_shear_radius : float or None
         Where it occurs, m (None when the shear vanishes everywhere). Locations are
         found to ~1e-7 a by zooming a grid (the maxima are flat, so the values are exact
         to the solver's accuracy).
+    strain : float
+        max(delta/a, surface slope at r = a, mean pressure/E*): a/R for a sphere. Rejected above
+        ``STRAIN_LIMIT``, warned above ``SMALL_STRAIN`` (module docstring).
     error : float
         The dimensionless solver's estimated absolute error in c, mu, P0* (0 for closed forms);
         the relative errors of a, delta, P and the stiffness are of the same order.
@@ -442,6 +466,7 @@ class Contact:
     max_pressure_radius: float
     max_shear: float
     max_shear_radius: float | None
+    strain: float
     error: float
     route: str
     frictionless: Contact | None = field(repr=False)
@@ -452,10 +477,11 @@ class Contact:
         return self.materials.modulus * self.approach / self.contact_radius  # M delta / a of (2.1)
 
     def _dimensionless(self, r: ArrayLike, f, name: str) -> np.ndarray | float:
-        rs = np.asarray(r, dtype=float)
-        if np.any(np.isnan(rs)) or np.any(rs < 0.0):
+        rs = finite_array(r, name)
+        if np.any(rs < 0.0):
             raise ValueError(f"{name} (radius, m) must be >= 0 and not NaN, got {r!r}")
-        x = rs / self.contact_radius
+        with np.errstate(over="ignore"):  # a radius beyond the doubles' range over a is outside the contact
+            x = rs / self.contact_radius
         inside = x <= 1.0
         out = np.zeros(rs.shape)
         out[inside] = f(x[inside])
@@ -474,7 +500,9 @@ class Contact:
         """Slip per unit approach d(u_r1 - u_r2)/d delta = sign(gamma_bar) u0(r/a), dimensionless, (2.10), (3.15).
 
         Zero in the stick zone r < c a and outside the contact; negative (inward) in the
-        annulus for gamma_bar > 0. Per unit load divide by ``stiffness``.
+        annulus for gamma_bar > 0. Per unit load divide by ``stiffness``. Raises
+        ``NotImplementedError`` where the dimensionless solution is the asymptotic law's (c < 1e-5,
+        ``route`` says so), which has no slip displacement.
         """
         flat = self._solution.flat if isinstance(self._solution, PowerLawSolution) else self._solution
         sign = -1.0 if self.gamma < 0.0 else 1.0
@@ -492,17 +520,19 @@ class Contact:
         delta ~ a^n at fixed mu), P = P1 delta/delta1 for the flat punch; (P1, delta1) are
         this contact's load and approach. Increasing load only (§2.1).
         """
-        d = np.asarray(approach, dtype=float)
+        d = finite_array(approach, "approach")
         if np.any(~np.isfinite(d)) or np.any(d <= 0.0):
             raise ValueError(f"approach (m) must be finite and > 0, got {approach!r}")
-        return scalar_or_array(self.load * (d / self.approach) ** self._exponent)
+        with np.errstate(over="ignore", under="ignore"):
+            return _representable(self.load * (d / self.approach) ** self._exponent, "approach", "load")
 
     def approach_at(self, load: ArrayLike) -> np.ndarray | float:
         """The inverse of ``load_at``: delta(P) in m for P in N."""
-        P = np.asarray(load, dtype=float)
+        P = finite_array(load, "load")
         if np.any(~np.isfinite(P)) or np.any(P <= 0.0):
             raise ValueError(f"load (N) must be finite and > 0, got {load!r}")
-        return scalar_or_array(self.approach * (P / self.load) ** (1.0 / self._exponent))
+        with np.errstate(over="ignore", under="ignore"):
+            return _representable(self.approach * (P / self.load) ** (1.0 / self._exponent), "load", "approach")
 
     def on_grid(self, x: ArrayLike, y: ArrayLike = 0.0) -> GridSolution:
         """The tractions, slip rate, stick radius and approach at grid points (x, y) in m.
@@ -538,12 +568,20 @@ class Contact:
         return _contact_dict(self)
 
 
+def _representable(values: np.ndarray, given: str, result: str) -> np.ndarray | float:
+    """``values`` (of ``result``, computed from ``given``) unless one overflows to inf or underflows to 0."""
+    if not np.all(np.isfinite(values) & (values > 0.0)):
+        raise ValueError(f"{given}: the {result} it gives overflows or underflows double precision")
+    return scalar_or_array(values)
+
+
 def _on_grid(contact: Contact, x: ArrayLike, y: ArrayLike) -> GridSolution:
     """``Contact.on_grid``: the fields at (x, y), the shear split into its Cartesian components."""
-    xs, ys = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+    xs, ys = np.broadcast_arrays(finite_array(x, "x"), finite_array(y, "y"))
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ys))):
         raise ValueError("x and y (grid coordinates, m) must be finite")
-    r = np.hypot(xs, ys)
+    with np.errstate(over="ignore"):  # beyond the doubles: outside the contact
+        r = np.hypot(xs, ys)
     tau = np.asarray(contact.shear(r), dtype=float)
     with np.errstate(invalid="ignore", divide="ignore"):
         cos_t = np.where(r > 0.0, xs / np.where(r > 0.0, r, 1.0), 0.0)
@@ -577,8 +615,11 @@ def _contact_dict(contact: Contact) -> dict:
         "compliance": contact.compliance,
         "flat_compliance": contact.flat_compliance,
         "indentation_constant": contact.A,
+        "strain": contact.strain,
     }
     out = {k: _finite_or_none(v) for k, v in out.items()}
+    if contact.strain > SMALL_STRAIN:
+        out["warning"] = small_strain_message(contact.strain)
     if contact.mu == 0.0:
         out["frictionless"] = dict(out)
     elif contact.frictionless is not None:
@@ -650,6 +691,13 @@ def _maximum(f, breakpoints: np.ndarray) -> tuple[float, float | None]:
     return best, best_x
 
 
+def small_strain_message(strain: float) -> str:
+    """Why a contact with this strain measure (above ``SMALL_STRAIN``) is outside Hertz theory."""
+    return (f"strain measure {strain:.3g} (a/R for a sphere; approach/radius, edge slope or mean pressure/E*) exceeds "
+            f"{SMALL_STRAIN:g}: Hertz theory assumes small strains and slopes on two linear elastic half-spaces, so "
+            "this result is the linear theory's, with an error of the order of the strain measure")
+
+
 def _check_strain(measure: float, given: str, value: float) -> None:
     if not measure < STRAIN_LIMIT:
         raise ValueError(
@@ -693,6 +741,11 @@ def indent(
     -------
     Contact
 
+    Warns
+    -----
+    SmallStrainWarning
+        If the strain measure ``Contact.strain`` (a/R for a sphere) exceeds ``SMALL_STRAIN`` = 0.1.
+
     Raises
     ------
     ValueError
@@ -711,16 +764,32 @@ def indent(
     (True, True)
     """
     mu_value, given, value = _checked(shape, half_space, indenter, mu, load, approach)
-    pair = MaterialPair(half_space, indenter)
-    sol = _dimensionless(shape, mu_value, pair.gamma, level)
-    scaled = _scaled(shape, sol, pair.modulus, given, value)
-    a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
-    _check_strain(max(delta / a, scaled.edge_slope, P / (math.pi * a * a) / pair.reduced_modulus), given, value)
+    contact = _indent(shape, MaterialPair(half_space, indenter), mu_value, given, value, level, with_frictionless)
+    if contact.strain > SMALL_STRAIN:
+        warnings.warn(SmallStrainWarning(small_strain_message(contact.strain)), stacklevel=2)
+    return contact
+
+
+def _indent(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, given: str, value: float, level: int,
+            with_frictionless: bool) -> Contact:
+    """``indent`` on checked input, without the warning (given once, for the contact asked for)."""
+    sol = _dimensionless(shape, mu, pair.gamma, level)
+    try:
+        scaled = _scaled(shape, sol, pair.modulus, given, value)
+        a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
+        area = math.pi * a * a
+        if not all(0.0 < v < math.inf for v in (a, delta, P, area)):
+            raise OverflowError
+    except (OverflowError, ZeroDivisionError):  # Python floats raise where the contact leaves the doubles
+        raise ValueError(f"{given} = {value!r} {'N' if given == 'load' else 'm'}: the contact radius, approach, load "
+                         "or contact area of this indenter overflow or underflow double precision; check the units "
+                         "(SI: N, m, Pa)") from None
+    strain = max(delta / a, scaled.edge_slope, P / area / pair.reduced_modulus)
+    _check_strain(strain, given, value)
     frictionless = None
-    if with_frictionless and mu_value != 0.0:
-        frictionless = indent(shape, half_space, mu=0.0, load=load, approach=approach, indenter=indenter,
-                              level=level, with_frictionless=False)
-    return _contact(shape, pair, mu_value, sol, scaled, frictionless)
+    if with_frictionless and mu != 0.0:
+        frictionless = _indent(shape, pair, 0.0, given, value, level, False)
+    return _contact(shape, pair, mu, sol, scaled, strain, frictionless)
 
 
 def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, str, float]:
@@ -731,7 +800,7 @@ def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, st
         raise ValueError("half_space and indenter must be Elastic (use elastic(E=..., nu=...))")
     if (load is None) == (approach is None):
         raise ValueError("give exactly one of load (N) or approach (m)")
-    mu_value = float(check_mu(mu))
+    mu_value = float(check_mu(real_number(mu, "mu")))
     if load is not None:
         return mu_value, "load", _positive(load, "load", "normal force, N")
     return mu_value, "approach", _positive(approach, "approach", "approach of the bodies, m")
@@ -778,7 +847,7 @@ def _scaled(shape: FlatPunch | PowerLaw, sol: FlatPunchSolution | PowerLawSoluti
 
 
 def _contact(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, sol: FlatPunchSolution | PowerLawSolution,
-             scaled: _Scaled, frictionless: Contact | None) -> Contact:
+             scaled: _Scaled, strain: float, frictionless: Contact | None) -> Contact:
     """The ``Contact``: stiffness, the maxima of the tractions in Pa, and the solver's error and route."""
     flat = sol.flat if isinstance(sol, PowerLawSolution) else sol
     a, delta, P = scaled.contact_radius, scaled.approach, scaled.load
@@ -792,6 +861,6 @@ def _contact(shape: FlatPunch | PowerLaw, pair: MaterialPair, mu: float, sol: Fl
         flat_compliance=flat.compliance, A=sol.A if isinstance(sol, PowerLawSolution) else None, contact_radius=a,
         stick_radius=sol.c * a, approach=delta, load=P, stiffness=stiffness, mean_pressure=P / (math.pi * a * a),
         max_pressure=scale * p_max, max_pressure_radius=p_at * a,
-        max_shear=scale * q_max, max_shear_radius=None if q_at is None else q_at * a,
+        max_shear=scale * q_max, max_shear_radius=None if q_at is None else q_at * a, strain=strain,
         error=flat.error, route=flat.route, frictionless=frictionless, _solution=sol,
     )

@@ -218,6 +218,19 @@ def _logit_parts(xi: float) -> tuple[float, float]:
     return 1.0 / (1.0 + math.exp(-xi)), 1.0 / (1.0 + math.exp(xi))
 
 
+def _at_theta(sol: Eigensolution, theta: float) -> Eigensolution:
+    """The solution on the same system at theta itself, where the friction it implies, tan(theta)/gamma, would
+    differ from the one asked for by more than 1e-14 relative: d log mu / d theta = 1/(sin cos) is mu gamma near
+    pi/2, so Newton's theta, within rounding of the root (~1e-16), missed mu by 6e-10 at mu gamma = 3600. The
+    eigenvalue condition there is off by the last step in c (below rounding in mu's terms)."""
+    miss = abs(theta - sol.theta) / (math.sin(theta) * math.cos(theta)) if theta < HALF_PI else 0.0
+    if miss <= 1e-14:
+        return sol
+    system = sol.system
+    z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+    return Eigensolution(system, theta, z, abs(theta - sol.theta))
+
+
 def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, slope: float, res: Resolution,
                              max_steps: int = 8) -> GuidedSolution:
     """Stick radius for theta = atan(mu gamma) < pi/2 from a close guess c = 1 - gap and slope = d theta / d xi.
@@ -238,7 +251,7 @@ def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, s
             slope = (sol.theta - previous[1]) / (xi - previous[0])
         step = (theta - sol.theta) / slope
         if abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step):
-            return GuidedSolution(sol, slope)
+            return GuidedSolution(_at_theta(sol, theta), slope)
         previous, last_step = (xi, sol.theta), abs(step)
         xi += step
         c, gap = _logit_parts(xi)

@@ -34,43 +34,46 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
-from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, resolve_gamma
+from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, real_number, resolve_gamma
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.errors import SolverError
 from numeric.core.table import table_given_mu, table_least_mu
 from numeric.solutions.law import LawRoute
-from numeric.solutions.limits import closed_form_given_c, closed_form_given_mu
+from numeric.solutions.limits import closed_form, closed_form_given_c, closed_form_given_mu
 from numeric.solutions.solver import C_ASYMPTOTIC, DEFAULT_LEVEL, LAW_MU_GAMMA_MAX, NEAR_C_MAX, SolverRoute
 from numeric.solutions.solution import FlatPunchSolution, Offer, first_meeting
 from numeric.solutions.table_route import TABLE_RTOL, TableRoute
 
-__all__ = ["flat_punch", "check_rtol", "level_and_rtol"]
+__all__ = ["flat_punch", "check_level", "check_rtol", "level_and_rtol", "GAMMA_LAW_EXACT"]
+
+GAMMA_LAW_EXACT = 1e-100
+"""Below this gamma the law answers, whatever ``level`` or ``rtol``: its error (K4 gamma^4 relative, second
+order) is far below rounding there, while the solver's kernels lose gamma^2 to underflow (measured: right to
+6e-13 in c at gamma = 1e-150, c = 6.5e-49 for 0.485 and OverflowError at 1e-200)."""
 
 
 def check_rtol(rtol) -> float:
-    """``rtol`` as a float, raising ValueError naming it unless positive and finite."""
-    value = float(rtol)
+    """``rtol`` as a float, raising ValueError naming it unless positive and finite (TypeError unless a number)."""
+    value = real_number(rtol, "rtol")
     if not (math.isfinite(value) and value > 0.0):
         raise ValueError(f"rtol must be a positive finite number, got {rtol!r}")
     return value
 
 
-def _check_level(level) -> int:
-    try:
-        ok = 0 <= int(level) < len(RESOLUTIONS) and int(level) == level
-    except (TypeError, ValueError, OverflowError):
-        ok = False
-    if not ok:
+def check_level(level) -> int:
+    """``level`` as an int, raising ValueError naming it unless one of the resolution levels (TypeError unless a number)."""
+    value = real_number(level, "level")
+    if not (0.0 <= value < len(RESOLUTIONS) and value == math.floor(value)):
         raise ValueError(f"level must be an integer in [0, {len(RESOLUTIONS) - 1}], got {level!r}")
-    return int(level)
+    return int(value)
 
 
 def level_and_rtol(level, rtol) -> tuple[int, float | None]:
     """The checked level (default ``DEFAULT_LEVEL``) and rtol; not both may be given."""
     if level is not None and rtol is not None:
         raise ValueError("give level or rtol, not both (rtol chooses the route and the level)")
-    return (DEFAULT_LEVEL if level is None else _check_level(level)), (None if rtol is None else check_rtol(rtol))
+    return (DEFAULT_LEVEL if level is None else check_level(level)), (None if rtol is None else check_rtol(rtol))
 
 
 def flat_punch(
@@ -123,7 +126,8 @@ def flat_punch(
     ------
     NoEigenvalueError
         If c is above the largest stick radius c_max(gamma) (``numeric.largest_stick_radius``) by more than
-        rounding. Within rounding of c_max (4 units in the last place of c, or twice the distance of the
+        rounding, or if gamma = 0 (nu = 1/2) and c < 1: without coupling every mu > 0 gives c = 1 and mu = 0
+        gives c = 0 (``numeric.solutions.limits``). Within rounding of c_max (4 units in the last place of c, or twice the distance of the
         level's c_max from the closed form) the result is the slip limit (``numeric.slip_limit``: mu = inf,
         c = c_max, ``route`` says so); just below, mu is finite with the shift of the level's c_max in ``error``.
     SolverError
@@ -174,6 +178,8 @@ def _given_c(nu: float | None, gamma: float, c: float, level: int, rtol: float |
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, c, None)
+    if gamma < GAMMA_LAW_EXACT:
+        return law.last_resort(None, f"gamma < {GAMMA_LAW_EXACT:g}, where the law is exact to rounding")
     solver = SolverRoute(nu, gamma, c, None, c)
     return _cheapest(law, _table(nu, gamma, c, None, rtol), solver, level, rtol, lambda sol: sol.mu,
                      f"c < {C_ASYMPTOTIC:g}")
@@ -184,6 +190,11 @@ def _given_mu(nu: float | None, gamma: float, mu: float, level: int, rtol: float
     if closed is not None:
         return closed
     law = LawRoute(nu, gamma, None, mu)
+    if gamma < GAMMA_LAW_EXACT:
+        why = f"gamma < {GAMMA_LAW_EXACT:g}, where the law is exact to rounding"
+        if law.bracket.c == 1.0:  # 1 - c below the doubles' spacing: the adhesive stresses, exactly as well
+            return closed_form(nu, gamma, mu, 1.0, True, f"adhesive stresses (App. B): {why}, and 1 - c < 1e-16")
+        return law.last_resort(None, why)
     gap_max = float(largest_stick_radius_gap(gamma))
     if mu * gamma >= LAW_MU_GAMMA_MAX:  # far beyond the law: c is c_max to rounding, or 1 to within gap_max
         solver = SolverRoute(nu, gamma, None, mu, 1.0, gap_max)

@@ -82,6 +82,8 @@ def law_stick_radius(mu: float, gamma: float, order: int) -> float:
 
 def law_compliance(c: float, gamma: float, order: int, f0: float) -> tuple[float, float]:
     """P* = 1 + gamma^2 P2 (+ gamma^4 P4 for order 2 and c >= 1e-3) and the bound of its error (f0 = f0(c))."""
+    if gamma * gamma * max(1.0, f0) < 1e-17:  # P2 < f0 (P2/f0 = 0.07 ... 0.364 for c = 1 - 1e-6 ... 0): 1 + gamma^2 P2 rounds to 1
+        return 1.0, KP2_BOUND * gamma**4 * f0
     p2 = P2_OVER_F0_AT_ZERO * f0 if c < 1e-100 else float(second_order.compliance_p2(c))
     if order == 2 and c >= second_order.C_MIN:
         return 1.0 + gamma**2 * p2 + gamma**4 * float(second_order.compliance_p4(c)), KP4_BOUND * gamma**6 * f0

@@ -1,8 +1,10 @@
 """The limits of the flat punch in closed form, and the largest stick radius ([S75] §2, App. B).
 
-mu = 0 is frictionless (2.26) with c = 0; gamma = 0 (an incompressible solid) has no shear
-coupling, q = 0 and c = 1 for any mu > 0 (mu = 0 for any c); mu = inf or c = 1 is the fully
-adhesive solution of Appendix B. ``closed_form_given_c`` and ``closed_form_given_mu`` answer
+mu = 0 is frictionless (2.26) with c = 0; gamma = 0 (an incompressible solid, or elastically
+similar bodies) has no shear coupling: q = 0 and nothing slips, so c = 1 for every mu > 0, and no
+friction coefficient gives a stick radius 0 < c < 1 (mu = 0, frictionless, is the degenerate c = 0;
+the law mu = gamma f0(c) (2.28) tends to it as gamma -> 0, but at gamma = 0 itself that mu gives
+c = 0, not c); mu = inf or c = 1 is the fully adhesive solution of Appendix B. ``closed_form_given_c`` and ``closed_form_given_mu`` answer
 first whether the problem is one of these (exactly, at no cost); the first refuses a stick
 radius above the largest one.
 
@@ -75,17 +77,21 @@ def closed_form(nu: float | None, gamma: float, mu: float, c: float, adhesive: b
 
 
 def closed_form_given_c(nu: float | None, gamma: float, c: float) -> FlatPunchSolution | None:
-    """The closed form if stick radius c is a limit (c = 1, or gamma = 0), else None.
+    """The closed form if stick radius c is a limit (c = 1), else None.
 
     Raises
     ------
     NoEigenvalueError
-        If c is at or above the largest stick radius c_max(gamma).
+        If c is at or above the largest stick radius c_max(gamma), or if gamma = 0 and c < 1 (without
+        coupling every mu > 0 gives c = 1, and mu = 0 gives c = 0).
     """
     if c == 1.0:
         return closed_form(nu, gamma, math.inf, 1.0, True, "adhesive, App. B")
     if gamma == 0.0:
-        return closed_form(nu, gamma, 0.0, c, False, "gamma = 0: no coupling, mu = 0 (2.28)")
+        raise NoEigenvalueError(
+            f"no friction coefficient gives stick radius c = {c!r} at gamma = 0 (nu = 1/2, or elastically similar "
+            "bodies): without coupling there is no shear and nothing slips, so c = 1 for every mu > 0 (c = 0 only "
+            "for the frictionless mu = 0)")
     if 1.0 - c <= float(largest_stick_radius_gap(gamma)):
         raise no_eigenvalue(c, gamma)
     return None

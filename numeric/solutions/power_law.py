@@ -64,6 +64,7 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
@@ -72,14 +73,15 @@ from numpy.typing import ArrayLike
 from scipy import special
 
 from asymptotics.arrays import scalar_or_array
-from asymptotics.materials import check_n, check_x
+from asymptotics.materials import GAMMA_MAX, check_n, check_x
 
 from numeric.core.graded_mesh import LEVELS
 from numeric.core.quadrature import (COMPOSITE_NODES, composite_rule, gauss_legendre, grade_to_zero, integration_matrices,
                                      split_geometric)
+from numeric.core.errors import SolverError
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.limits import closed_form
-from numeric.solutions.solution import FlatPunchSolution
+from numeric.solutions.solution import AccuracyWarning, FlatPunchSolution
 from numeric.solutions.solver import LEVEL_TYPICAL_ERROR
 
 __all__ = [
@@ -87,6 +89,9 @@ __all__ = [
     "power_law",
     "FlatStresses",
     "EDGE_GAP",
+    "C_RTOL",
+    "N_RANGE",
+    "SUBNORMAL_N",
     "power_law_pressure",
     "power_law_shear",
     "indentation_constant",
@@ -98,6 +103,20 @@ __all__ = [
 
 EDGE_GAP = 1e-13
 """Smallest distance 1 - x at which the flat solution is sampled; beyond, the edge form is used."""
+
+N_RANGE = (1e-300, 100.0)
+"""The exponents ``power_law`` takes. Above 100 the quadratures of (3.13) lose digits (the frictionless pressure is
+4e-13 from its closed form at n = 100, 2e-9 at 150, 5e-2 at 1000), and the indenter is a flat punch to that
+accuracy; below 1e-300 A ~ 1/n overflows."""
+
+SUBNORMAL_N = 1.05
+"""Below this n the stresses at a subnormal x (< 2.2e-308) are refused; above, they are the centre values, from
+which they differ by x^(n - 1) < 4.6e-16 relative."""
+_TINY = float(np.finfo(float).tiny)
+
+C_RTOL = 1e-6
+"""Relative error of ``PowerLawSolution.C`` above which it warns: five digits lost against the flat solution's
+~1e-11 (reached near n = 10 for c ~ 0.3, n = 14 for c ~ 0.9)."""
 
 _SERIES_TERMS = 30  # terms of the small-s series of W_n (0.25^30 < 1e-18)
 
@@ -171,8 +190,8 @@ def _checked_constants(flat: FlatStresses) -> tuple[float, float, float]:
         if not hasattr(flat, name):
             raise ValueError(f"flat must provide '{name}' (see FlatStresses)")
     gamma, mu, c = float(flat.gamma), float(flat.mu), float(flat.c)
-    if not 0.0 <= gamma < 1.0:
-        raise ValueError(f"flat.gamma must lie in [0, 1), got {flat.gamma!r}")
+    if not 0.0 <= gamma <= GAMMA_MAX:
+        raise ValueError(f"flat.gamma must lie in [0, 3/4], got {flat.gamma!r}")
     if not mu >= 0.0:
         raise ValueError(f"flat.mu must be >= 0 (inf when adhesive), got {flat.mu!r}")
     if not 0.0 <= c <= 1.0:
@@ -312,6 +331,12 @@ def _evaluate(flat: FlatStresses, n: float, x: ArrayLike, component: int) -> np.
     xs = check_x(x)
     prepared = _Flat(flat)
     values = xs.ravel()
+    subnormal = (values > 0.0) & (values < _TINY)
+    if np.any(subnormal):
+        if n < SUBNORMAL_N:
+            raise ValueError(f"x must be 0 or a normal double (>= {_TINY:g}) for n = {n!r} < {SUBNORMAL_N}: p and q go "
+                             f"like x^(n - 1) near the centre, not resolved at a subnormal x, got {x!r}")
+        values = np.where(subnormal, 0.0, values)  # |p(x) - p(0)| ~ x^(n - 1) < 5e-16 p(0) there
     out = np.zeros(values.shape)
     positive = values > 0.0
     if np.any(positive):
@@ -548,6 +573,27 @@ def displacement_constant(flat: FlatStresses, n: float, *, x: float | None = Non
     return float(c_star * math.exp(special.gammaln(1.0 + 0.5 * n) - special.gammaln(0.5 * n + 1.5)) / math.sqrt(math.pi))
 
 
+def _displacement_constant_checked(flat: FlatPunchSolution, n: float) -> tuple[float, float]:
+    """C at x = c/2 and its relative change at x = c/4 (its error estimate), warning or raising as
+    ``PowerLawSolution.C`` says."""
+    if flat.c == 0.0 or flat.gamma == 0.0:  # frictionless or uncoupled: u = 0 in the stick zone
+        return 0.0, 0.0
+    with np.errstate(over="ignore", invalid="ignore"):  # t^(-n) overflows at small c and large n: raised below
+        value = displacement_constant(flat, n)
+        other = displacement_constant(flat, n, x=0.25 * flat.c)
+    if math.isinf(value) and (0.5 * flat.c) ** n < _TINY:  # documented: |C| ~ c^-n is beyond the doubles
+        return value, 0.0
+    if not (math.isfinite(value) and math.isfinite(other)):
+        raise SolverError(f"C (3.4) of the power law n = {n!r} at c = {flat.c!r} cannot be evaluated: u = C x^n is a "
+                          "difference of two stick-zone integrals whose rounding grows with n (x^n underflows here)")
+    error = abs(other - value) / abs(value) if value != 0.0 else (0.0 if other == 0.0 else math.inf)
+    if error > C_RTOL:
+        warnings.warn(AccuracyWarning(
+            f"C (3.4) of the power law n = {n!r} at c = {flat.c!r} is good to {error:.1e} relative only (two points "
+            f"of the stick zone give {value!r} and {other!r}): its rounding grows with n"), stacklevel=3)
+    return value, error
+
+
 def power_law_compliance(flat: FlatStresses, n: float) -> float:
     """Compliance factor P* = n P0* / (n + 1) of the power-law indenter, [S75] (3.17).
 
@@ -584,7 +630,15 @@ class PowerLawSolution:
         computed on first access (a quadrature of the flat shear), then kept.
     C : float
         Stick-zone displacement constant, u = C x^n on (0, c) (3.4); computed on first
-        access, then kept.
+        access, then kept. It is a difference of two stick-zone integrals divided by x^n, so its
+        rounding grows with n (measured at x = c/2: ~1e-13 at n = 2, 1e-8 at n = 8, 1e-5 at
+        n = 12, and lost beyond n ~ 14); ``C_error`` is its estimated relative error, the change
+        when the same C is evaluated at x = c/4 (the true C does not depend on x). Where that
+        exceeds ``C_RTOL`` an ``AccuracyWarning`` says so. Where (c/2)^n underflows, |C|, which grows
+        like c^-n, is beyond the doubles and C is -inf (or +inf); where C cannot be evaluated otherwise
+        a ``SolverError`` is raised.
+    C_error : float
+        Estimated relative error of ``C`` (0 where C = 0 exactly).
     """
 
     n: float
@@ -621,9 +675,13 @@ class PowerLawSolution:
     @property
     def C(self) -> float:
         if "C" not in self._cache:
-            plain = self.flat.c == 0.0 or self.flat.gamma == 0.0  # frictionless or uncoupled: u = 0 in the stick zone
-            self._cache["C"] = 0.0 if plain else displacement_constant(self.flat, self.n)
+            self._cache["C"], self._cache["C_error"] = _displacement_constant_checked(self.flat, self.n)
         return self._cache["C"]
+
+    @property
+    def C_error(self) -> float:
+        self.C  # noqa: B018 - computes both on first access
+        return self._cache["C_error"]
 
     def pressure(self, x: ArrayLike) -> np.ndarray | float:
         """Contact pressure p(x) by (3.13); p(1) = 0 (3.7)."""
@@ -638,7 +696,7 @@ def power_law(n: float, nu: float | None = None, mu: float | None = None, c: flo
               gamma: float | None = None, level: int | None = None, rtol: float | None = None) -> PowerLawSolution:
     """Solve the frictional contact of a power-law indenter z ~ r^n, [S75] §3.
 
-    Parameters are those of ``numeric.flat_punch`` plus the exponent ``n > 0``. With ``rtol``
+    Parameters are those of ``numeric.flat_punch`` plus the exponent n, 1e-300 <= n <= 100 (``N_RANGE``). With ``rtol``
     the asymptotic route of ``flat_punch`` is not used (A and C need the full stresses) except
     below the solver's reach, c < 1e-5.
 
@@ -649,6 +707,9 @@ def power_law(n: float, nu: float | None = None, mu: float | None = None, c: flo
     (1.0, 1.018591635788)
     """
     n_value = check_n(n)
+    if not N_RANGE[0] <= n_value <= N_RANGE[1]:
+        raise ValueError(f"n (power-law exponent) must lie in [{N_RANGE[0]:g}, {N_RANGE[1]:g}] (N_RANGE: beyond 100 the "
+                         f"indenter is a flat punch, use flat_punch), got {n!r}")
     flat = flat_punch(nu=nu, mu=mu, c=c, gamma=gamma, level=level, rtol=rtol)
     if rtol is not None and flat.route.startswith("asymptotic"):
         # A and C need the full stresses: from the law's first-order fields they are off by far more

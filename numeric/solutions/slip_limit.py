@@ -32,11 +32,12 @@ from numpy.typing import ArrayLike
 
 from asymptotics.arrays import scalar_or_array
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
-from asymptotics.materials import check_gamma, check_nu, gamma_from_nu, resolve_gamma
+from asymptotics.materials import check_gamma, check_nu, gamma_from_nu, real_number, resolve_gamma
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.eigenvalue import solve_given_theta
 from numeric.core.fields import SingularField
+from numeric.solutions.flat_punch import check_level
 from numeric.solutions.solution import FlatPunchSolution
 from numeric.solutions.solver import DEFAULT_LEVEL, GAP_ADHESIVE, solve_limit
 
@@ -80,7 +81,7 @@ def slip_limit(nu: float | None = None, *, gamma: float | None = None, level: in
     (nu = 1/2) it is the closed form c = 1 (no coupling).
     """
     g = resolve_gamma(nu, gamma)
-    return solve_limit(None if nu is None else float(check_nu(nu)), g, level)[0]
+    return solve_limit(None if nu is None else float(check_nu(real_number(nu, "nu"))), g, check_level(level))[0]
 
 
 def stick_radius_approach(nu: float | None = None, *, gamma: float | None = None, level: int = DEFAULT_LEVEL) -> float:
@@ -95,6 +96,7 @@ def stick_radius_approach(nu: float | None = None, *, gamma: float | None = None
         (~1.2 ... 1.5 (1 - c_max)), are below what the solver resolves, and at nu = 1/2 there is none.
     """
     g = resolve_gamma(nu, gamma)
+    level = check_level(level)
     gap_max = float(largest_stick_radius_gap(g))
     if not gap_max >= GAP_ADHESIVE:
         raise ValueError(f"stick_radius_approach: at gamma = {g:.6g} (nu = {nu}) the slip annulus of the limit, "

@@ -2,8 +2,8 @@
 
 All points at once through the Chebyshev table of ``numeric.core.table`` inside its domain
 (microseconds a point); the others one by one through ``flat_punch``, serially or mapped over
-an executor (``concurrent.futures``, a Dask client's ``get_executor()``), with a progress line
-on stderr. With ``rtol`` each point takes the cheapest route that meets it: the asymptotic law
+an executor (``concurrent.futures``, a Dask client's ``get_executor()``), with a progress bar
+on stderr (``numeric.solutions.progress``). With ``rtol`` each point takes the cheapest route that meets it: the asymptotic law
 (``numeric.solutions.law``), the table where its recorded error does, else ``flat_punch``.
 
 References
@@ -15,8 +15,6 @@ References
 from __future__ import annotations
 
 import math
-import sys
-import time
 from collections.abc import Callable, Iterable
 from typing import Protocol
 
@@ -29,6 +27,7 @@ from numeric.core.table import (table_available, table_errors, table_friction_co
                                 table_least_c, table_stick_radius)
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
 from numeric.solutions.law import LawRoute, law_stick_radius
+from numeric.solutions.progress import Progress, check_progress, progress_bar
 from numeric.solutions.solution import first_meeting
 
 __all__ = ["Executor", "TABLE_MARGIN", "table_meets", "stick_radius", "friction_coefficient"]
@@ -66,13 +65,6 @@ def _solved_mu(c: float, nu: float, level: int | None, rtol: float | None) -> fl
     return flat_punch(nu=nu, c=c, level=level, rtol=rtol).mu
 
 
-def _report(name: str, done: int, total: int, started: float) -> None:
-    rate = done / max(time.perf_counter() - started, 1e-9)
-    end = "\n" if done == total else ""
-    sys.stderr.write(f"\r{name}: {done}/{total} points solved, {rate:.3g} points/s{end}")
-    sys.stderr.flush()
-
-
 def table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
     """Where the table's value meets rtol: its recorded error of mu or c (``table_errors``) times TABLE_MARGIN."""
     errors = table_errors()
@@ -81,9 +73,9 @@ def table_meets(kind: str, values: np.ndarray, rtol: float) -> np.ndarray:
 
 
 def _sweep(name: str, kind: str, table, solve, first: ArrayLike, nu: ArrayLike, use_table: bool, level: int | None,
-           rtol: float | None, executor: Executor | None, progress: bool) -> np.ndarray | float:
+           rtol: float | None, executor: Executor | None, progress: Progress) -> np.ndarray | float:
     """Evaluate ``table`` on all points at once; solve the points outside its domain, one by
-    one or through ``executor``, reporting progress on stderr when asked. With ``rtol``, points
+    one or through ``executor``, with a progress bar on stderr (``progress``). With ``rtol``, points
     where the asymptotic law meets it take that first, and the table only where it meets rtol."""
     a, n = np.broadcast_arrays(np.asarray(first, dtype=float), np.asarray(nu, dtype=float))
     shape = a.shape
@@ -111,27 +103,26 @@ def _sweep(name: str, kind: str, table, solve, first: ArrayLike, nu: ArrayLike, 
     if missing.size:
         args = (a[missing], n[missing], [level] * missing.size, [rtol] * missing.size)
         results = executor.map(solve, *args) if executor is not None else map(solve, *args)
-        started = time.perf_counter()
-        for k, (index, value) in enumerate(zip(missing, results), 1):
-            out[index] = value
-            if progress:
-                _report(name, k, missing.size, started)
+        with progress_bar(missing.size, name, progress) as bar:
+            for index, value in zip(missing, results):
+                out[index] = value
+                bar.update()
     out = out.reshape(shape)
     return float(out) if out.ndim == 0 else out
 
 
 def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int | None = None,
                  rtol: float | None = None, executor: Executor | None = None,
-                 progress: bool = False) -> np.ndarray | float:
+                 progress: Progress = "auto") -> np.ndarray | float:
     """Stick radius c(mu, nu) of [S75] §2.2, broadcasting over arrays.
 
     Inside the table's domain (``numeric.core.table``: c >= 1e-5 up to the largest stick radius, every
     nu in (-1, 1/2]; for gamma <= 0.1, nu >= 0.44, up to 1 - c = 1e-13) c comes from the Chebyshev
-    tables (~50 microseconds a point for 1000 points at once, errors
-    ``numeric.core.table_data.ERRORS``); below c = 1e-5 from the second-order law; elsewhere, or with
+    tables (about 6 ms for 1000 points at once, errors ``numeric.core.table_data.ERRORS``); below c = 1e-5 from the second-order law; elsewhere, or with
     ``use_table=False``, from ``flat_punch`` at ``level``: one by one, or mapped over
     ``executor`` (any ``concurrent.futures`` executor, or a Dask client's ``get_executor()``),
-    with a progress line on stderr when ``progress`` is true.
+    with a progress bar and time to go on stderr: ``progress`` "auto" (the default) draws it when
+    stderr is a terminal, True always, False never.
 
     With ``rtol`` (not together with ``level``) the cheapest route meeting it for each point:
     the asymptotic law (see ``flat_punch``), else the table where its recorded error (times
@@ -147,12 +138,12 @@ def stick_radius(mu: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level:
     check_nu(nu)
     level_and_rtol(level, rtol)
     return _sweep("stick_radius", "c", table_stick_radius, _solved_c, mu, nu, use_table, level,
-                  None if rtol is None else check_rtol(rtol), executor, progress)
+                  None if rtol is None else check_rtol(rtol), executor, check_progress(progress))
 
 
 def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True, level: int | None = None,
                          rtol: float | None = None, executor: Executor | None = None,
-                         progress: bool = False) -> np.ndarray | float:
+                         progress: Progress = "auto") -> np.ndarray | float:
     """Friction coefficient mu(c, nu) that produces stick radius c, broadcasting over arrays.
 
     From the Chebyshev table inside its domain, else from ``flat_punch`` (see ``stick_radius``,
@@ -162,4 +153,4 @@ def friction_coefficient(c: ArrayLike, nu: ArrayLike, *, use_table: bool = True,
     check_nu(nu)
     level_and_rtol(level, rtol)
     return _sweep("friction_coefficient", "mu", table_friction_coefficient, _solved_mu, c, nu, use_table, level,
-                  None if rtol is None else check_rtol(rtol), executor, progress)
+                  None if rtol is None else check_rtol(rtol), executor, check_progress(progress))

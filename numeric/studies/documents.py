@@ -12,8 +12,10 @@ Computes:
 
 ``regenerate(directory, fast=, check=)`` writes them (or, with ``check``, names the stale
 ones); ``fast`` leaves the solver-computed blocks of the documents and the figures as
-committed. The output is deterministic (no timestamps), so a re-run leaves ``git diff``
-empty. ``hertz-friction derivations`` and ``python derivations/regenerate.py`` run it.
+committed. The output is deterministic (no timestamps), and a document whose only changes are
+measured rounding-level figures that still meet their tolerances is current
+(``asymptotics.document.agrees``) and not rewritten, so a re-run leaves ``git diff`` empty on
+any machine. ``hertz-friction derivations`` and ``python derivations/regenerate.py`` run it.
 
 References
 ----------
@@ -26,7 +28,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from asymptotics.document import blocks_of, join, render_part
+from asymptotics.document import agrees, blocks_of, join, render_part, text_of
 
 from numeric.studies.expansion_checks import ExpansionStudy, expansion_study
 from numeric.studies.expansion_report import plot_expansion_errors, render_markdown
@@ -74,7 +76,8 @@ def _merge(blocks: list[tuple[str, str | None]], committed: str) -> str:
 
 
 def documents(study: ExpansionStudy | None) -> dict[str, Callable[[str], str]]:
-    """File name -> function of the committed text giving the regenerated text."""
+    """File name -> function of the committed text giving the regenerated text (its measured figures marked:
+    ``asymptotics.document.text_of`` gives the Markdown)."""
     docs: dict[str, Callable[[str], str]] = {"paper_tables.md": lambda _: render() + "\n"}
     for name, (file, _) in PART_DOCUMENTS.items():
         docs[file] = lambda committed, name=name: _merge(part_blocks(name, study), committed)
@@ -100,11 +103,13 @@ def regenerate(directory: Path, *, fast: bool, check: bool,
         path = directory / file
         committed = path.read_text(encoding="utf-8") if path.exists() else ""
         fresh = make(committed)
+        if agrees(committed, fresh):
+            report(f"{path} is current")
+            continue
         if check:
-            if fresh != committed:
-                stale.append(file)
+            stale.append(file)
         else:
-            path.write_text(fresh, encoding="utf-8")
+            path.write_text(text_of(fresh), encoding="utf-8")
             report(f"wrote {path}")
     if study is not None and not check:
         for path in _write_figures(directory, study):

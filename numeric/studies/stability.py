@@ -62,6 +62,7 @@ import scipy.linalg as sla
 from scipy.sparse.linalg import LinearOperator, onenormest
 
 from asymptotics.adhesive import central_pressure_adhesive, pressure_adhesive_mp, shear_adhesive_mp
+from asymptotics.derivation import rounding_bound
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
 from asymptotics.materials import gamma_from_nu
 
@@ -343,7 +344,11 @@ def _gap_max(gamma: float) -> float:
 
 
 def _adhesive_compliance(gamma: float) -> float:
-    return math.atanh(gamma) / gamma if gamma > 0.0 else 1.0  # (B4)
+    """atanh(gamma)/gamma (B4), correctly rounded: the bound the API's closed form is checked against."""
+    if gamma == 0.0:
+        return 1.0
+    with mpmath.workdps(30):
+        return float(mpmath.atanh(gamma) / gamma)  # (B4)
 
 
 @contextlib.contextmanager
@@ -427,7 +432,8 @@ def _solution_problems(s, gamma: float, given: str, argument: float) -> list[str
         elif math.isinf(mu) and c < 1.0 and not at_c_max:
             out.append("mu = inf at c < 1 (documented only for the adhesive c = 1 and for c_max to rounding)")
     top = _adhesive_compliance(gamma)
-    if not (math.isfinite(P) and 1.0 - slack - 4 * EPS <= P <= top + slack + 4 * EPS):
+    rounding = rounding_bound(1, 1) * top  # the closed form np.arctanh(gamma)/gamma: one call, one division
+    if not (math.isfinite(P) and 1.0 - slack - rounding <= P <= top + slack + rounding):
         out.append(f"P* = {P!r} outside [1, atanh(gamma)/gamma = {top!r}] (B4)")
     return out
 
@@ -527,7 +533,8 @@ def sweep(grid: Grid) -> tuple[SweepPoint, ...]:
         for c in _c_grid(grid, gamma):
             o = _attempt(lambda nu=nu, c=c: flat_punch(nu=nu, c=c))
             flat = o.value
-            expected = o.exception is NoEigenvalueError and c >= c_max  # documented: c at or above c_max
+            # documented: c at or above c_max, or any c < 1 at gamma = 0 (no friction coefficient gives a slip annulus)
+            expected = o.exception is NoEigenvalueError and (c >= c_max or gamma == 0.0)
             probs = [] if flat is None else _solution_problems(flat, gamma, "c", c)
             by_c.append(_point("flat_punch(c)", nu, c, o, probs, expected))
             o = _attempt(lambda nu=nu, c=c: float(friction_coefficient(c, nu)))
@@ -540,7 +547,7 @@ def sweep(grid: Grid) -> tuple[SweepPoint, ...]:
             if (o.value is None) != (flat is None):
                 probs.append("flat_punch(c) and friction_coefficient disagree on whether this point has a solution")
             points.append(_point("friction_coefficient", nu, c, o,
-                                 probs, o.exception is NoEigenvalueError and c >= c_max))
+                                 probs, o.exception is NoEigenvalueError and (c >= c_max or gamma == 0.0)))
         points += _monotone(by_c, "mu")
         for mu in grid.power_law_mus:
             o = _attempt(lambda nu=nu, mu=mu: _with_constants(power_law(2, nu=nu, mu=mu)))

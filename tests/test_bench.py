@@ -16,9 +16,11 @@ from numeric.app.cli import main
 from numeric.baseline import scheme
 from numeric.studies import bench, bench_report
 from numeric.studies.bench import (
+    FULL,
     SCHEME,
     SOLVER,
     TABLE,
+    Benchmark,
     Case,
     Config,
     Row,
@@ -200,3 +202,16 @@ def test_headline_extrapolates_the_paper_along_a_power_law():
 def test_headline_is_none_without_a_level_reaching_the_target():
     rows = [r for r in _case(0.0, 0.005) if r.resolution in ("h = 0.02", "level 1")]
     assert headline(rows, "mu", target=1e-10) is None
+
+
+def test_headline_renders_when_our_solver_is_faster_than_every_mesh_of_the_paper():
+    # our level 2 (0.1 s) before the scheme's coarsest mesh (0.5 s): nothing of the paper runs in our time, and the
+    # rendered line says so (it formatted None and the benchmark stopped)
+    from numeric.studies.bench_report import render
+
+    rows = [_synthetic(0.0, 0.5, SCHEME, f"h{k}", t, 1e-3 / t, published=k == 0) for k, t in enumerate((0.5, 2.0, 8.0))]
+    rows.append(_synthetic(0.0, 0.5, SOLVER, "level 2", 0.1, 1e-11))
+    h = headline(rows, "mu", target=1e-10)
+    assert h.paper_error_in_our_time is None and h.ratio == pytest.approx(0.2)
+    bench = Benchmark(FULL, (), tuple(rows), (), (), 1.0)
+    assert "the paper's scheme reaches nothing" in render(bench)

@@ -202,15 +202,19 @@ def solve_given_theta(theta: float, gamma: float, c_logit_guess: float, res: Res
 
 @dataclass(frozen=True, slots=True, eq=False)
 class GuidedSolution:
-    """The last given-c solve of ``solve_given_theta_guided`` and d theta / d xi there (the caller's, or the
-    secant of the last two solves)."""
+    """The last given-c solve of ``solve_given_theta_guided``, d theta / d xi there (the caller's, or the secant of
+    the last two solves), and the step in xi = logit c it did not take (below STEP_TOLERANCE): the c of theta lies
+    that far from the solution's."""
 
     solution: Eigensolution
     slope: float
+    remaining_step: float
 
 
-#: The guided iteration in logit c stops below this step (relative to max(1, |logit c|)).
-STEP_TOLERANCE = 1e-13
+#: The guided iteration in logit c stops below this step (relative to max(1, |logit c|)): c would move by less than
+#: 1e-12 (1 - c) relative, the size of the level's own discretisation error (the step not taken is reported and
+#: enters the error estimate). The tables' c is good to 1e-13 ... 1e-9, so one solve is often enough.
+STEP_TOLERANCE = 1e-12
 
 
 def _logit_parts(xi: float) -> tuple[float, float]:
@@ -237,10 +241,9 @@ def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, s
 
     Given-c solves (Newton in theta at fixed c, the basis carrying alpha = theta / pi) at xi_k, stepped by
     xi_{k+1} = xi_k + (theta - theta(xi_k)) / slope, the slope from the last two solves once there are two.
-    Stops when the next step would be below STEP_TOLERANCE in xi (c would move by less than 1e-13 relative, a
-    tenth of the levels' rounding floor, ``numeric.solutions.solver.ERROR_FLOOR``), or once steps below 1e-8
-    stop shrinking (the small jumps of theta(xi) where the layout changes, of the size of the discretisation
-    error). Raises SolverError if it does not settle.
+    Stops when the next step would be below STEP_TOLERANCE in xi, or once steps below 1e-8 stop shrinking (the
+    small jumps of theta(xi) where the layout changes, of the size of the discretisation error); the last solve is
+    then taken at theta itself (``_at_theta``). Raises SolverError if it does not settle.
     """
     xi = math.log(c) - math.log(gap)
     previous: tuple[float, float] | None = None
@@ -251,7 +254,7 @@ def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, s
             slope = (sol.theta - previous[1]) / (xi - previous[0])
         step = (theta - sol.theta) / slope
         if abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step):
-            return GuidedSolution(_at_theta(sol, theta), slope)
+            return GuidedSolution(_at_theta(sol, theta), slope, abs(step))
         previous, last_step = (xi, sol.theta), abs(step)
         xi += step
         c, gap = _logit_parts(xi)

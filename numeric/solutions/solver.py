@@ -266,7 +266,8 @@ def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found:
 
         def estimate() -> float:
             coarse = SingularField(core_given_c(fine.c, fine.gap, gamma, fine.theta, partner(res)))
-            shift = abs(fine.theta - coarse.theta) / abs(guided.slope)  # the partner's logit c for this theta, less ours
+            # the partner's logit c for this theta, less ours, and the step in logit c the iteration did not take
+            shift = abs(guided.solution.theta - coarse.theta) / abs(guided.slope) + guided.remaining_step
             scale = max(fine.c, fine.compliance)
             return max(fine.c * fine.gap * shift, abs(fine.compliance - coarse.compliance) + compliance_slope * shift,
                        rounding_floor(fine.c, scale))

@@ -287,11 +287,12 @@ def chart_of_offset(lay: Layout, e: int, offset: np.ndarray) -> np.ndarray:
 #: 5 singular functions: 1e-9 ... 5e-7), well by points clustered toward the singular end
 #: (r^2: 1e-13 ... 4e-13 at the stick-slip boundary; r^1.5: 3e-15 at the edge). On the slip side of c the
 #: points cluster harder: near the largest stick radius (beta = 1 - 2 alpha ~ 0.02) the family there is
-#: nearly log s and its amplitude, seen only from s >= 1e-3 at 1.25, was extrapolated to the slip side's
+#: nearly log s and its amplitude, seen only from s >= 1e-3 at r^1.25, was extrapolated to the slip side's
 #: s ~ 1e-5 at x within a few ulp of c: q there drifted by 1e-6 relative between degrees 12 ... 26
-#: (nu = 0.3, 1 - c = 1.05 (1 - c_max)); at 1.75 it converges monotonically, degrees 18 ... 26 within
-#: 4e-10 (``tests/test_singular_solver.py``).
-COLLOCATION_POWER = {PLAIN: 1.0, STICK_END: 1.25, SLIP_END: 1.75, EDGE: 1.25}
+#: (nu = 0.3, 1 - c = 1.05 (1 - c_max)). At r^1.5 degrees 12 ... 28 agree within 3e-9 there
+#: (``tests/test_singular_solver.py``); r^1.75 did better at x = c (9e-10) but lost mu at degrees 24 and 28 near
+#: c_max (1.8e-9 at degree 28, nu = 0, 1 - c = 1.01 (1 - c_max), where r^1.5 keeps every degree within 4e-12).
+COLLOCATION_POWER = {PLAIN: 1.0, STICK_END: 1.25, SLIP_END: 1.5, EDGE: 1.25}
 
 
 def collocation_chart(kind: int, n: int) -> np.ndarray:

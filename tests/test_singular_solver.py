@@ -100,9 +100,11 @@ def test_given_mu_and_given_c_are_one_relation():
 def test_shear_at_c_converges_next_to_the_largest_stick_radius(nu, factor):
     # 1 - c = factor (1 - c_max): mu gamma = 50 ... 1500, beta = 1 - 2 alpha = 0.02 ... 0.0005, and q near c on the
     # slip side is A + B h_beta(s), nearly A + B log s: at x = c and the nearest doubles (s ~ 1e-5) the value
-    # rests on B. Degrees 18 and 24 of the same layout (a convergence study: with the slip-side collocation points
-    # of charts.COLLOCATION_POWER measured 2.1e-9 and 2.7e-9 apart, relative to q; 1e-6 with the Gauss points at
-    # r^1.25 before) agree within 1e-8, and the default level (degree 12) likewise (measured 7.8e-10, 1.9e-9)
+    # rests on B, amplified by |log s| / beta: rounding alone moves it (degrees 18 and 24 measured 2.7e-9 apart with
+    # numpy's AVX-512 paths, 1.05e-8 on the x86-64-v2 baseline). Degrees 18 and 24 of the same layout (a convergence
+    # study with the slip-side collocation points of charts.COLLOCATION_POWER) agree within 5e-8, and the default
+    # level (degree 12) likewise (measured 7.8e-10, 1.9e-9); with the Gauss points at r^1.25 before they drifted by
+    # 3.5e-7 ... 1e-6
     import math
 
     from asymptotics.largest_stick_radius import largest_stick_radius_gap
@@ -116,5 +118,5 @@ def test_shear_at_c_converges_next_to_the_largest_stick_radius(nu, factor):
     theta = math.atan(flat_punch(nu=nu, c=c).mu * g)
     x = np.array([c, np.nextafter(c, 2.0), c + 1e-9 * gap, c * (1.0 - 1e-12)])
     q = {k: SingularField(solve_given_c(c, gap, g, theta, Resolution(k, 3))).shear(x) for k in (12, 18, 24)}
-    assert np.all(np.abs(q[18] / q[24] - 1.0) <= 1e-8), q
-    assert np.all(np.abs(q[12] / q[24] - 1.0) <= 1e-8), q
+    assert np.all(np.abs(q[18] / q[24] - 1.0) <= 5e-8), q
+    assert np.all(np.abs(q[12] / q[24] - 1.0) <= 5e-8), q

@@ -33,7 +33,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, NEAR_OUTSIDE, chebyshev_points01, gauss01, outside_projector,
+from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINTS, NEAR_OUTSIDE, chebyshev_points01, gauss01,
+                                     outside_projector,
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, shifted_legendre)
@@ -259,6 +260,8 @@ class AbelOperators:
             side = ~own & ~inside & ((d <= 0.0) if away else (d >= 1.0))
             near = side & ((-d < NEAR_OUTSIDE) if away else (d - 1.0 < NEAR_OUTSIDE))
             far = side & ((d <= FAR_BEFORE) if away else (d >= FAR_BEYOND))
+            if np.count_nonzero(far) < INTERPOLATION_POINTS:  # a few points: the direct sum costs less than the projection
+                far[:] = False
             rows = np.flatnonzero(side & ~near & ~far)
             if rows.size:
                 terms.append(_Term(rows, rL * Wo[None, :] * sqrt_outside_kernel(So, one_minus, d[rows]), So, Po, True))

@@ -332,11 +332,9 @@ def mode_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
 
 
 def _tail(y: np.ndarray, coefficients: np.ndarray) -> np.ndarray:
-    """sum_{k >= 1} coefficients[k - 1] y^k (|y| <= 1/2), by Horner."""
-    total = np.zeros(y.shape)
-    for a in coefficients[::-1]:
-        total = (total + a) * y
-    return total
+    """sum_{k >= 1} coefficients[k - 1] y^k (|y| <= 1/2): the powers by a cumulative product, one matrix product."""
+    powers = np.cumprod(np.broadcast_to(y[:, None], (y.size, coefficients.size)), axis=1)
+    return powers @ coefficients
 
 
 @lru_cache(maxsize=None)
@@ -401,14 +399,22 @@ def _chebyshev01(r: int = CHEBYSHEV_POINTS) -> tuple[np.ndarray, np.ndarray]:
     return s, bary
 
 
-@lru_cache(maxsize=256)
-def _moments(family: Family) -> np.ndarray:
-    """M[i, j] = int_0^1 l_i(s) w(s) P_j(2s - 1) ds for the Lagrange polynomials l_i of the Chebyshev points."""
-    s, ws = _lean_rule(family)
+@lru_cache(maxsize=64)
+def _lagrange_legendre(nodes: tuple[float, ...] | int, degree: int) -> tuple[np.ndarray, np.ndarray]:
+    """At the nodes of a rule: the Lagrange polynomials of the Chebyshev points (nodes, r) and P_0..P_degree."""
+    s = _graded_toward_zero(_HBETA_PIECES, 12)[0] if isinstance(nodes, int) else np.array(nodes)
     xk, bary = _chebyshev01()
     terms = bary[None, :] / (s[:, None] - xk[None, :])
-    lagrange = terms / terms.sum(axis=1, keepdims=True)
-    out = (lagrange * ws[:, None]).T @ legendre01(family.degree, s)
+    return terms / terms.sum(axis=1, keepdims=True), legendre01(degree, s)
+
+
+@lru_cache(maxsize=256)
+def _moments(family: Family) -> np.ndarray:
+    """M[i, j] = int_0^1 l_i(s) w(s) P_j(2s - 1) ds for the Lagrange polynomials l_i of the Chebyshev points (the
+    h_beta rule's nodes do not depend on beta: their Lagrange and Legendre values are kept)."""
+    s, ws = _lean_rule(family)
+    lagrange, legendre = _lagrange_legendre(0 if family.kind == HBETA else tuple(s), family.degree)
+    out = (lagrange * ws[:, None]).T @ legendre
     out.setflags(write=False)
     return out
 

@@ -29,7 +29,8 @@ from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
 from numeric.core.plane_operators import PlaneCollocationSystem, PlaneOperators, plane_collocation_system
 
-__all__ = ["PlaneEigensolution", "plane_given_c", "plane_given_theta", "ALPHA_TOLERANCE"]
+__all__ = ["PlaneEigensolution", "plane_given_c", "plane_given_theta", "partner_shift_theta", "partner_shift_xi",
+           "ALPHA_TOLERANCE", "CHORD_BELOW", "CLOSE"]
 
 HALF_PI = 0.5 * math.pi
 ALPHA_TOLERANCE = 1e-12
@@ -45,6 +46,7 @@ class PlaneEigensolution:
     theta: float
     coefficients: np.ndarray
     last_step: float  # the last Newton step in theta, or secant step in logit c
+    slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution
 
     @property
     def layout(self) -> PlaneLayout:
@@ -55,16 +57,19 @@ ALPHA_STEP = 1e-7
 """Step in the basis exponent of the difference quotient dD/dalpha (error ~1e-7 relative in dG, rounding ~1e-9)."""
 
 
-def _evaluate(ops: PlaneOperators, gamma: float, theta: float) -> tuple[PlaneCollocationSystem, np.ndarray, float, float]:
-    """The system with the basis exponent alpha = theta/pi, its solution z, G = a and dG/dtheta along alpha = theta/pi:
-    dG = l' . z - y . (dD/dtheta + dD/dalpha / pi) z with D^T y = l, dD/dalpha by a difference quotient (the basis
-    exponent moves the singular families; at fixed basis G's slope can even have the wrong sign, measured)."""
+def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool = True
+              ) -> tuple[PlaneCollocationSystem, np.ndarray, float, float]:
+    """The system with the basis exponent alpha = theta/pi, its solution z, G = a and (if asked) dG/dtheta along
+    alpha = theta/pi: dG = l' . z - y . (dD/dtheta + dD/dalpha / pi) z with D^T y = l, dD/dalpha by a difference
+    quotient (the basis exponent moves the singular families; at fixed basis G's slope can have the wrong sign)."""
     alpha = theta / math.pi
     system = plane_collocation_system(ops, gamma, alpha)
     D = system.matrix(theta)
     lu = EquilibratedLU(D)
     z = lu.solve(system.rhs)
     l = system.functional(theta)
+    if not derivative:
+        return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
     shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP)
     dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
@@ -72,20 +77,39 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float) -> tuple[PlaneCol
     return system, z, float(l @ z), float(dG)
 
 
+#: A Newton step below this (relative) from a close guess is the last: its successor is below ~1e-14.
+CLOSE = 1e-7
+
+#: Newton keeps its last derivative (a chord step) while its steps are below this, relative: the derivative is then
+#: good to ~1e-4 and the chord step's error ~1e-4 of the step, far below the step itself.
+CHORD_BELOW = 1e-4
+
+
 def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: PlaneResolution,
-                  max_steps: int = 40) -> PlaneEigensolution:
+                  max_steps: int = 40, close: bool = False) -> PlaneEigensolution:
     """theta = atan(mu gamma) for stick half-width c = 1 - gap: Newton in theta from a guess, the basis exponent
     following theta at every step, safeguarded by bisection (in log mu) once the root is bracketed.
 
     G(theta) (the mode's amplitude) is smooth and decreasing in theta over (0, pi/2] (it changes sign once at
     the eigenvalue); the iteration stops when a step is below ``ALPHA_TOLERANCE`` relative, or when the steps
-    stop shrinking below 1e-10 relative (the rounding floor of G)."""
+    stop shrinking below 1e-10 relative (the rounding floor of G). The derivative is formed again only while the
+    steps exceed ``CHORD_BELOW`` relative (or after a bisection). ``close``: the guess is a coarser resolution's
+    root; one Newton step is taken and accepted if it is below ``CLOSE`` relative (the coefficients are those at the
+    guess: the stresses move by the step times their derivative in theta, ~1e-12)."""
     ops = PlaneOperators(plane_layout(c, gap, res))
     theta = theta_guess
     lo, hi = 0.0, HALF_PI  # bracket: G > 0 at lo, G < 0 at hi
     previous = math.inf
-    for _ in range(max_steps):
+    dG = math.nan
+    if close:  # one Newton step from a guess within ~1e-7: the next would be ~1e-14, below the rounding floor
         system, z, G, dG = _evaluate(ops, gamma, theta)
+        new = theta - G / dG
+        if abs(new - theta) <= CLOSE * theta and new < HALF_PI:
+            return PlaneEigensolution(system, ops, new, z, abs(new - theta), dG)
+    for _ in range(max_steps):
+        fresh = not (previous <= CHORD_BELOW * theta)
+        system, z, G, slope = _evaluate(ops, gamma, theta, derivative=fresh)
+        dG = slope if fresh else dG
         if G > 0.0:
             lo = max(lo, theta)
         elif G < 0.0:
@@ -102,12 +126,26 @@ def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: P
                 new = HALF_PI if math.tan(theta) > 1e3 else math.atan(4.0 * math.tan(theta))
             else:
                 new = math.atan(math.sqrt(math.tan(lo) * math.tan(hi)))
-        change = abs(new - theta)
-        if change <= ALPHA_TOLERANCE * theta or (change <= 1e-10 * theta and change >= 0.25 * previous):
-            return PlaneEigensolution(system, ops, theta, z, change)
-        previous = change
+            change = abs(new - theta)
+            if change <= ALPHA_TOLERANCE * theta or hi - lo <= ALPHA_TOLERANCE * theta:  # the bracket is at rounding
+                return PlaneEigensolution(system, ops, theta, z, max(change, hi - lo), dG)
+            previous = math.inf  # a fresh derivative at the next point
+        else:
+            change = abs(new - theta)
+            if change <= ALPHA_TOLERANCE * theta or (change <= 1e-10 * theta and change >= 0.25 * previous):
+                return PlaneEigensolution(system, ops, theta, z, change, dG)
+            previous = change
         theta = new
     raise SolverError(f"Newton in theta did not converge for c = {c}, gamma = {gamma} (last step {change:.3g})")
+
+
+def partner_shift_theta(c: float, gap: float, gamma: float, solution: PlaneEigensolution, res: PlaneResolution
+                        ) -> float:
+    """theta_partner - theta for the resolution ``res`` (one evaluation of its G at the solution's theta, over the
+    solution's slope: the two resolutions' G differ by the discretisation error, their slopes by far less)."""
+    ops = PlaneOperators(plane_layout(c, gap, res))
+    G = _evaluate(ops, gamma, solution.theta, derivative=False)[2]
+    return -G / solution.slope
 
 
 def _residual(xi: float, theta: float, gamma: float, res: PlaneResolution):
@@ -136,6 +174,14 @@ def plane_given_theta(theta: float, gamma: float, xi_guess: float, res: PlaneRes
         g1, system, ops, z = _residual(x1, theta, gamma, res)
         size = abs(x1 - x0)
         if size <= tol * max(1.0, abs(x1)) or (size <= 1e-9 and size >= 0.25 * previous):
-            return PlaneEigensolution(system, ops, theta, z, size)
+            return PlaneEigensolution(system, ops, theta, z, size, (g1 - g0) / (x1 - x0))
         previous = size
     raise SolverError(f"the secant iteration in c did not converge for theta = {theta}, gamma = {gamma}")
+
+
+def partner_shift_xi(theta: float, gamma: float, solution: PlaneEigensolution, res: PlaneResolution) -> float:
+    """xi_partner - xi (xi = logit c) for the resolution ``res`` at fixed theta: one evaluation of its G at the
+    solution's c over the solution's secant slope dG/dxi."""
+    lay = solution.layout
+    xi = math.log(lay.c) - math.log(lay.gap)
+    return -_residual(xi, theta, gamma, res)[0] / solution.slope

@@ -127,7 +127,7 @@ def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: P
             else:
                 new = math.atan(math.sqrt(math.tan(lo) * math.tan(hi)))
             change = abs(new - theta)
-            if change <= ALPHA_TOLERANCE * theta or hi - lo <= ALPHA_TOLERANCE * theta:  # the bracket is at rounding
+            if change <= 1e-10 * theta or hi - lo <= 1e-10 * theta:  # Newton left a bracket already at rounding
                 return PlaneEigensolution(system, ops, theta, z, max(change, hi - lo), dG)
             previous = math.inf  # a fresh derivative at the next point
         else:

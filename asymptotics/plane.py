@@ -46,9 +46,34 @@ from .materials import check_c, check_gamma, check_mu, check_nu, check_x
 
 __all__ = ["gamma_plane_stress", "bonded_index", "mu_over_gamma_plane", "mu_over_gamma_plane_mp",
            "stick_width_first_order", "stick_width_first_order_mp", "c_small_mu_plane", "gap_large_mu_plane",
-           "pressure_sadowsky", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction"]
+           "pressure_sadowsky", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction", "EXACT_RELATION"]
 
 _THETA_TERMS = 12
+
+#: The closing note on the exact eigen-relation (rendered in ``derivations/plane_strain.md``).
+EXACT_RELATION = """## The exact relation: what it was reduced to, and why no closed form is given here
+
+With w = p + i q and F(z) = (1/(2 pi i)) int_{-1}^{1} w(t) dt/(t - z), the conditions are, on the stick zone |x| < c,
+F+ = -((1 + gamma)/(1 - gamma)) F- (H w = i gamma w); on the slip zones c < |x| < 1 two real conditions,
+Im[(1 - i mu sgn x)(F+ - F-)] = 0 (q = mu sgn(x) p) and -Im(F+ + F-) + gamma mu sgn(x) Re(F+ - F-) = 0 (flat punch);
+F+ = F- outside. For the vector (F, F*), F*(z) = conj F(conj z), these are a 2 x 2 matrix Riemann-Hilbert problem with
+piecewise constant jumps: diagonal on the stick zone, non-diagonal on each slip zone, and the jump matrices of the two
+kinds do not commute, so it does not reduce to scalar problems (the flat-punch symmetry F(-z) = F*(z) folds it onto
+zeta = z^2 with singular points 0, c^2, 1 and infinity, but the jumps still do not commute). Its solution is that of a
+Fuchsian system with four singular points whose monodromy is given (local exponents 0 and 1/2 - alpha at c, alpha - 1/2
+at 1, 2-D-exponents below), a connection problem of Heun / Painleve VI type with no elementary solution in general; the
+eigenvalue condition is that the exponent at c is 1/2 - alpha and not -1/2 - alpha. [S73] is reported (in [S75] §2.2,
+§4.1) to have solved the 2-D problem analytically, by a Wiener-Hopf technique, and to have shown the Fredholm kernel of
+the reduction analogous to [S75] (2.24) positive; that paper was not available here and its relation was not
+reproduced. In one more attempt the reduction of [S75] §2.2 was followed in the plane: phi = p - q/mu vanishes on the
+slip zones, the normal relation becomes a Carleman equation tan(pi alpha) sgn(x) p + H p = tan(pi alpha) sgn(x) phi on
+(-1, 1), solvable in closed form (its fundamental solution (1 - x^2)^(alpha - 1/2) |x|^(-2 alpha), the |x|^(-2 alpha)
+term excluded as in [S75] (2.20)), and the stick relation then gives a regular equation for phi on (-c, c); its kernel
+was not brought to closed form within the time set for this. What is given instead: the first-order law
+mu/gamma = K(c)/K'(c) in closed form with its limits and its measured O(gamma^2) error (below), the largest stick width
+from the limit problem, and the full solution to 1e-10.
+"""
+
 
 
 def gamma_plane_stress(nu: ArrayLike) -> np.ndarray | float:

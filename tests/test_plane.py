@@ -285,3 +285,19 @@ def test_the_guess_table_is_reproduced_by_its_script(tmp_path):
     finally:
         (root / "numeric" / "core" / "plane_guess_data.py").write_text(committed)
         importlib.reload(plane_guess_data)
+
+
+def test_the_stick_width_saturates_below_the_edge():
+    # c_max(nu = 0): the limit mu -> inf extrapolated from mu gamma = 1e5, 1e6 against the limit problem solved at
+    # theta = pi/2 itself (a different route, degree 20): 2e-13 absolute in 1 - c_max (bound 1e-12)
+    from numeric.core.plane_eigenvalue import plane_given_theta
+    s = plane.slip_limit(0.0)
+    direct = plane_given_theta(math.pi / 2, 0.5, math.log(0.99626 / 0.00374), PlaneResolution(20, 2), step=0.01)
+    assert abs(s.gap - direct.layout.gap) < 1e-12
+    assert s.error < 1e-12 and s.mu == math.inf
+    # c(mu) approaches it from below like 1/mu: (1 - c) - (1 - c_max) = A/(mu gamma), A/(1 - c_max) ~ 1.43 (measured)
+    near = plane.flat_punch(nu=0.0, mu=2000.0)
+    assert near.c < s.c
+    assert 1.2 < (near.gap - s.gap) * 2000.0 * 0.5 / s.gap < 1.7
+    # the first-order law would close the slip zone: 8 exp(-pi mu/gamma) is 0 to double precision at mu = 2000
+    assert closed.gap_large_mu_plane(2000.0, 0.5) == 0.0

@@ -30,9 +30,11 @@ from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
 from numeric.core.plane_operators import PlaneCollocationSystem, PlaneOperators, plane_collocation_system
 
 __all__ = ["PlaneEigensolution", "plane_given_c", "plane_given_theta", "partner_shift_theta", "partner_shift_xi",
-           "ALPHA_TOLERANCE", "CHORD_BELOW", "CLOSE"]
+           "ALPHA_TOLERANCE", "CHORD_BELOW", "CLOSE", "THETA_MAX"]
 
 HALF_PI = 0.5 * math.pi
+THETA_MAX = HALF_PI - 1e-9
+"""Largest theta Newton visits (mu gamma = 1e9): at pi/2 itself the generic mode degenerates (``MODE_BETA_MIN``)."""
 ALPHA_TOLERANCE = 1e-12
 """Newton in theta stops when a step is below this, relative."""
 
@@ -98,13 +100,14 @@ def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: P
     guess: the stresses move by the step times their derivative in theta, ~1e-12)."""
     ops = PlaneOperators(plane_layout(c, gap, res))
     theta = theta_guess
-    lo, hi = 0.0, HALF_PI  # bracket: G > 0 at lo, G < 0 at hi
+    theta = min(theta, THETA_MAX)
+    lo, hi = 0.0, THETA_MAX  # bracket: G > 0 at lo, G < 0 at hi
     previous = math.inf
     dG = math.nan
     if close:  # one Newton step from a guess within ~1e-7: the next would be ~1e-14, below the rounding floor
         system, z, G, dG = _evaluate(ops, gamma, theta)
         new = theta - G / dG
-        if abs(new - theta) <= CLOSE * theta and new < HALF_PI:
+        if abs(new - theta) <= CLOSE * theta and new < THETA_MAX:
             return PlaneEigensolution(system, ops, new, z, abs(new - theta), dG)
     for _ in range(max_steps):
         fresh = not (previous <= CHORD_BELOW * theta)
@@ -114,16 +117,16 @@ def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: P
             lo = max(lo, theta)
         elif G < 0.0:
             hi = min(hi, theta)
-        if G > 0.0 and theta >= HALF_PI:
+        if G > 0.0 and theta >= THETA_MAX:
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {gamma:.6g}: "
                                     "the eigen functional keeps its sign up to mu = inf (c is above the largest "
                                     "stick width c_max)")
         new = theta - G / dG if dG != 0.0 else math.nan
-        if not (lo < new < hi or (new == hi == HALF_PI)) or not math.isfinite(new):  # bisect in log mu
+        if not (lo < new < hi or (new == hi == THETA_MAX)) or not math.isfinite(new):  # bisect in log mu
             if lo == 0.0:
                 new = 0.5 * theta
-            elif hi == HALF_PI:
-                new = HALF_PI if math.tan(theta) > 1e3 else math.atan(4.0 * math.tan(theta))
+            elif hi == THETA_MAX:
+                new = THETA_MAX if math.tan(theta) > 1e3 else math.atan(4.0 * math.tan(theta))
             else:
                 new = math.atan(math.sqrt(math.tan(lo) * math.tan(hi)))
             change = abs(new - theta)

@@ -45,11 +45,13 @@ from numeric.core.quadrature import gauss_legendre
 from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
                                        element_families)
 
-MODE_BETA_MIN = 1e-3
-"""The generic mode carries the exponent beta - 1 with beta = 1/2 - alpha, but at least this: as beta -> 0 its stick
-and slip parts (delta functions at c from either side, in the scaling beta s^(beta - 1)) cancel in q and vanish in
-p, and the column degenerates. The eigenvalue does not depend on the mode's column (at the root its amplitude is 0
-and the other unknowns solve the system without it), only the smoothness of G near the root does."""
+MODE_BETA_MIN = 1e-9
+"""The generic mode carries the exponent beta - 1 with beta = 1/2 - alpha, but at least this. In the scaling
+beta s^(beta - 1) its parts tend to delta functions at c from either side that cancel in q (and p carries
+cos(theta) ~ pi beta), so at beta = 0 (mu = inf exactly) the column degenerates; below mu gamma ~ 1e9 it follows the
+true exponent (with beta held at 1e-3 instead, the functional near c_max at nu = 0.3 was erratic: a mode of the wrong
+exponent). The eigenvalue does not depend on the mode's column (at the root its amplitude is 0), only the smoothness
+of G near the root does; the limit mu -> inf is taken by extrapolation (``numeric.solutions.plane_solver``)."""
 
 __all__ = ["MODE_BETA_MIN", "PlaneOperators", "Transforms", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor"]
 

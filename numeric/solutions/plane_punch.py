@@ -197,9 +197,11 @@ def plane_slip_limit(nu: float | None = None, *, gamma: float | None = None, lev
     if g == 0.0:
         raise ValueError("gamma = 0 (nu = 1/2): no coupling, every mu > 0 sticks fully (c = 1)")
     solve = solve_limit(g, _level(level))
-    return _from_field(None if nu is None else float(nu), solve.field, solve.error, level, math.inf,
-                       f"limit mu -> inf (slip zones without pressure), solver level {level}, "
-                       f"{solve.field.n_unknowns} unknowns")
+    f = solve.field
+    return StripPunchSolution(None if nu is None else float(nu), g, math.inf, 1.0 - solve.gap_limit, solve.gap_limit,
+                              solve.error, f"limit mu -> inf (slip zones without pressure; c extrapolated from mu gamma "
+                              f"= 1e5, 1e6, the stresses at 1e6), solver level {level}, {f.n_unknowns} unknowns",
+                              f.residual, f)
 
 
 def plane_largest_stick_width(nu: float | None = None, *, gamma: float | None = None,

@@ -6,8 +6,8 @@ the half-plane in the +X direction, x = X/a, both over P/a (P the load per unit 
 that int_{-1}^{1} p dx = 1. The surface relations of plane strain (Johnson, Contact
 Mechanics, (2.25)) read, with H f(x) = (1/pi) PV int_{-1}^{1} f(t) dt / (t - x),
 
-    (G / (1 - nu)) a du_z/dX / (P/a) = H p + gamma q,
-    (G / (1 - nu)) a du_x/dX / (P/a) = H q - gamma p,      gamma = (1 - 2 nu) / (2 - 2 nu),
+    (G a / ((1 - nu) P)) du_z/dX = H p + gamma q,
+    (G a / ((1 - nu) P)) du_x/dX = H q - gamma p,      gamma = (1 - 2 nu) / (2 - 2 nu),
 
 the same gamma as [S75] (2.2) (plane stress: nu -> nu / (1 + nu), gamma = (1 - nu)/2). The flat
 punch: H p + gamma q = 0 on (-1, 1); stick |x| < c: H q - gamma p = 0; slip c < |x| < 1, inward:

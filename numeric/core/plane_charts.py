@@ -227,14 +227,16 @@ def collocation_points(lay: PlaneLayout) -> PointSet:
     return PointSet(anchor, offset, x, np.concatenate(owners), np.concatenate(charts))
 
 
-def locate(lay: PlaneLayout, x: np.ndarray, side: np.ndarray | None = None) -> PointSet:
+def locate(lay: PlaneLayout, x: np.ndarray, side: np.ndarray | None = None, offset_from_one: np.ndarray | None = None
+           ) -> PointSet:
     """Points 0 <= x <= 1 as a ``PointSet``: anchored at 1 beyond the middle of the slip zone, else at c.
 
-    x = c belongs to the stick end (``side`` = SLIP moves it to the slip end), x = 1 to the edge element."""
+    x = c belongs to the stick end (``side`` = SLIP moves it to the slip end), x = 1 to the edge element.
+    ``offset_from_one``: x - 1 exactly, where the caller has it (next to the edge a double x rounds it)."""
     x = np.asarray(x, dtype=float)
     to_one = x > lay.c + 0.5 * lay.gap
     anchor = np.where(to_one, AT_ONE, AT_C)
-    offset = np.where(to_one, x - 1.0, x - lay.c)
+    offset = np.where(to_one, x - 1.0 if offset_from_one is None else offset_from_one, x - lay.c)
     lo = np.array([lay.x_range(e)[0] for e in range(len(lay))])
     order = np.argsort(lo)
     owner = order[np.clip(np.searchsorted(lo[order], x, side="right") - 1, 0, len(lay) - 1)]

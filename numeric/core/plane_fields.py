@@ -103,11 +103,11 @@ class PlaneField:
                 q[edge] = math.inf
         return p.reshape(x.shape), (np.sign(x).ravel() * q).reshape(x.shape)
 
-    def strain(self, t: np.ndarray) -> np.ndarray:
+    def strain(self, t: np.ndarray, offset_from_one: np.ndarray | None = None) -> np.ndarray:
         """du/dx = H q - gamma p at points c < t < 1 of the slip zone (not at element ends, where single basis
-        functions' transforms are logarithmic)."""
+        functions' transforms are logarithmic); ``offset_from_one``: t - 1 exactly, if known."""
         t = np.asarray(t, dtype=float)
-        pts = locate(self.layout, t)
+        pts = locate(self.layout, t, offset_from_one=offset_from_one)
         ops = PlaneOperators(self.layout, pts)
         T = ops.transforms(self.alpha)
         return T.odd @ self._q - self.gamma * (T.values @ self._p)
@@ -119,12 +119,14 @@ class PlaneField:
         out = np.zeros(ax.shape)
         outer = np.flatnonzero(ax > self.c)
         if outer.size:
-            s, _, w = graded_both_ends()
+            s, one_minus_s, w = graded_both_ends()
             length = ax[outer] - self.c  # the offset of x from c
             nodes = self.c + length[:, None] * s[None, :]
+            # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
+            from_one = (ax[outer] - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
             ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
             nodes = np.where(np.isin(nodes, ends), np.nextafter(nodes, 2.0), nodes)
-            values = self.strain(nodes.ravel()).reshape(nodes.shape)
+            values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
             out[outer] = (values @ w) * length
         return (np.sign(x).ravel() * out).reshape(x.shape)
 

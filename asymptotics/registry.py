@@ -31,6 +31,7 @@ PARTS: Mapping[str, tuple[str, tuple[str, ...]]] = MappingProxyType({
                                                             "asymptotics.derive.largest_stick_radius")),
     "3": ("§3 The Hertzian indentor: power-law transforms", ("asymptotics.derive.similarity",)),
     "B": ("Appendix B, (4.10), (4.18): the adhesive solution", ("asymptotics.derive.adhesive",)),
+    "P": ("Plane strain: the strip punch and the cylinder with friction (issue 14)", ("asymptotics.derive.plane",)),
 })
 
 

@@ -27,9 +27,10 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("asymptotics", "numeric")
 #: layer -> rank; a module may import a layer of lower or equal rank (siblings of equal rank excepted)
 LAYERS = {"asymptotics": 0, "numeric.core": 1, "numeric.solutions": 2, "numeric.baseline": 2, "numeric": 3,
-          "numeric.studies": 4, "numeric.app": 5}
+          "numeric.plane": 3, "numeric.studies": 4, "numeric.app": 5}
 BASELINE_MAY_IMPORT = {"numpy", "scipy", "mpmath"}
-API_PACKAGES = {"numeric", "asymptotics"}  # top-level packages: their __init__ may re-export
+# top-level packages and the plane-strain API (numeric.plane mirrors numeric's API): their __init__ may re-export
+API_PACKAGES = {"numeric", "numeric.plane", "asymptotics"}
 
 
 @dataclass(frozen=True)
@@ -94,8 +95,8 @@ def _project(name: str) -> bool:
 def layer_of(name: str) -> str | None:
     """The layer of a project module (the longest layer prefix); None for a numeric module outside the
     layer folders (only numeric/__init__.py itself is the API layer)."""
-    if name == "numeric":
-        return "numeric"
+    if name in ("numeric", "numeric.plane"):
+        return name
     for layer in sorted(LAYERS, key=len, reverse=True):
         if layer != "numeric" and (name == layer or name.startswith(layer + ".")):
             return layer
@@ -275,7 +276,7 @@ def test_no_module_is_shadowed_once_imported():
 
 def test_the_layers_are_folders():
     folders = {p.name for p in (ROOT / "numeric").iterdir() if (p / "__init__.py").exists()}
-    assert folders == {"core", "solutions", "baseline", "studies", "app"}
+    assert folders == {"core", "solutions", "baseline", "studies", "app", "plane"}
     assert [p.name for p in (ROOT / "numeric").glob("*.py")] == ["__init__.py"]
 
 

@@ -23,6 +23,7 @@ LABELS = {
     "3": ["(3.5)", "(3.10)", "(3.13)", "(3.15)", "(3.16)", "(3.16)-edge", "(3.17)", "(3.18)", "(3.19)", "(3.20)",
           "frictionless-n"],
     "B": ["(4.10)", "(B3)", "(B4)", "(B4)-series", "(B6)", "(4.18)"],
+    "P": ["2D-formulation", "2D-exponents", "2D-(2.28)", "2D-(2.29)", "2D-(3.13)"],
 }
 ALL = [label for labels in LABELS.values() for label in labels]
 # Results where the paper's printed statement is wrong (the derivation says how, in its note).

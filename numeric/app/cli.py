@@ -1,7 +1,8 @@
 """The ``hertz-friction`` command line.
 
 Subcommands: ``sphere``, ``punch``, ``cone``, ``power-law`` (a contact in SI units,
-``numeric.app.contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
+``numeric.app.contact``), ``cylinder`` and ``strip`` (plane strain, load per unit length,
+``numeric.app.plane_contact``), ``solve`` (one dimensionless case), ``table`` (a sweep over mu and nu),
 and the studies: ``figures``, ``bench``, ``stability``, ``derivations`` (the committed documents)
 and ``tables`` (the paper's tables). ``hertz-friction CMD --help`` describes each.
 
@@ -66,6 +67,7 @@ def _build_parser() -> argparse.ArgumentParser:
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     _physical_parsers(commands)
+    _line_contact_parsers(commands)
     _solve_parser(commands)
     _table_parser(commands)
     _study_parsers(commands)
@@ -446,7 +448,86 @@ def _run_tables(args) -> int:
 
 
 _RUN = {"solve": _run_solve, "table": _run_table, "figures": _run_figures, "bench": _run_bench,
-        "stability": _run_stability, "derivations": _run_derivations, "tables": _run_tables}
+        "stability": _run_stability, "derivations": _run_derivations, "tables": _run_tables,
+        "cylinder": lambda args: _run_line_contact(args), "strip": lambda args: _run_line_contact(args)}
+
+
+def _line_contact_parsers(commands) -> None:
+    """``cylinder`` and ``strip``: plane strain (issue 14), load per unit length."""
+    text = ("Press {what} into an elastic half-space in plane strain (a line contact) with friction; SI units in and "
+            "out (N/m, m, Pa). The indentation depth of a half-plane is not defined: the load-width relation, the "
+            "tractions and the slip are reported instead.")
+    for name, size, helptext in (("cylinder", "--radius", "cylinder radius R, m"),
+                                 ("strip", "--half-width", "half-width a of the rigid flat strip punch, m")):
+        p = commands.add_parser(name, help="a cylinder of radius R (line contact)" if name == "cylinder" else
+                                "a rigid flat strip punch of half-width a (line contact)",
+                                description=text.format(what="a cylinder" if name == "cylinder" else "a rigid strip punch"))
+        p.add_argument(size, type=float, required=True, help=helptext)
+        p.add_argument("--load-per-length", type=float, required=True, metavar="P", help="load per unit length P, N/m")
+        modulus = p.add_mutually_exclusive_group(required=True)
+        modulus.add_argument("--E", type=float, help="Young's modulus of the half-space, Pa")
+        modulus.add_argument("--G", type=float, help="shear modulus of the half-space, Pa")
+        p.add_argument("--nu", type=float, required=True, help="Poisson's ratio of the half-space, in (-1, 1/2] "
+                       "(plane stress: give nu/(1 + nu))")
+        p.add_argument("--mu", type=float, required=True, help="Coulomb friction coefficient, >= 0 (inf: full stick)")
+        indenter = p.add_mutually_exclusive_group()
+        indenter.add_argument("--indenter-E", type=float, metavar="E", help="Young's modulus of the indenter, Pa "
+                              "(default: rigid)")
+        indenter.add_argument("--indenter-G", type=float, metavar="G", help="shear modulus of the indenter, Pa")
+        p.add_argument("--indenter-nu", type=float, metavar="NU", help="Poisson's ratio of the indenter "
+                       "(required with --indenter-E/--indenter-G)")
+        p.add_argument("--level", type=int, default=2, choices=(1, 2, 3, 4),
+                       help="solver resolution level (default 2, ~1e-10)")
+        p.add_argument("--json", action="store_true", help="print one JSON object (SI units) instead of text")
+
+
+def _run_line_contact(args) -> int:
+    from numeric.app.plane_contact import press_cylinder, press_strip
+
+    half, indenter = _elastic_bodies(args)
+    press = press_cylinder if args.command == "cylinder" else press_strip
+    size = args.radius if args.command == "cylinder" else args.half_width
+    contact = press(size, half, mu=args.mu, load=args.load_per_length, indenter=indenter, level=args.level)
+    if args.json:
+        sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
+    else:
+        sys.stdout.write(_describe_line(contact))
+    return 0
+
+
+def _describe_line(s) -> str:
+    """A line contact as a human-readable table with units."""
+    pair = s.materials
+    hs = pair.half_space
+    body = "rigid" if pair.indenter is None else f"elastic (E = {_si(pair.indenter.E, 'Pa')}, nu = {pair.indenter.nu:g})"
+    what = f"cylinder, radius {_si(s.size, 'm')}" if s.shape == "cylinder" else f"strip punch, half-width {_si(s.size, 'm')}"
+    reference = "Hertz" if s.shape == "cylinder" else "frictionless (Sadowsky)"
+
+    def at(value, where):
+        return "infinite (at the edges)" if not math.isfinite(value) else f"{_si(value, 'Pa')} at x = {_si(where, 'm')}"
+
+    ratio = (lambda a, b: f"{a / b:.6g}" if math.isfinite(a) and math.isfinite(b) and b != 0.0 else "")
+    rows = [
+        ("contact half-width a", _si(s.half_width, "m"), _si(s.frictionless_half_width, "m"),
+         ratio(s.half_width, s.frictionless_half_width)),
+        ("stick half-width c a", _si(s.stick_half_width, "m"), "0 m", ""),
+        ("centre pressure", _si(s.centre_pressure, "Pa"), _si(s.frictionless_centre_pressure, "Pa"),
+         ratio(s.centre_pressure, s.frictionless_centre_pressure)),
+        ("max pressure", at(s.max_pressure, s.max_pressure_at), at(s.frictionless_max_pressure, 0.0),
+         ratio(s.max_pressure, s.frictionless_max_pressure)),
+        ("max shear", at(s.max_shear, s.max_shear_at), "0 Pa", ""),
+        ("slip at x = a" if s.shape == "strip" else "slip rate du/dP at x = a",
+         _si(s.slip_edge, "m") if s.shape == "strip" else f"{s.slip_edge:.6g} m/(N/m)", "", ""),
+    ]
+    width = max(len(r[1]) for r in rows) + 3
+    lines = [f"{what}, {body}, on a half-space E = {_si(hs.E, 'Pa')}, nu = {hs.nu:g} (plane strain); mu = {s.mu:g}; "
+             f"load {_si(s.load, 'N/m')}",
+             f"reduced modulus E* = {_si(pair.reduced_modulus, 'Pa')}, gamma = {s.gamma:.6g}", "",
+             f"{'':26}{'with friction':{width}}{reference:{max(width, len(reference) + 3)}}ratio"]
+    for name, value, ref, r in rows:
+        lines.append(f"{name:26}{value:{width}}{ref:{max(width, len(reference) + 3)}}{r}")
+    lines += ["", f"stick fraction c = {s.c:.10g}; route: {s.route}; estimated error of c or mu: {s.error:.1e}"]
+    return "\n".join(lines) + "\n"
 
 
 def _attach_negative_values(argv: list[str]) -> list[str]:

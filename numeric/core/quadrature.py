@@ -37,6 +37,7 @@ __all__ = [
     "integration_matrices",
     "split_geometric",
     "grade_to_zero",
+    "tanh_sinh01",
 ]
 
 COMPOSITE_NODES = 30
@@ -185,3 +186,22 @@ def graded_rule(layers: int, ratio: float, nmax: int, nmin: int, dn: int) -> tup
     x.setflags(write=False)
     w.setflags(write=False)
     return x, w
+
+
+@lru_cache(maxsize=None)
+def tanh_sinh01(step: float = 1.0 / 16.0, span: float = 3.2) -> tuple[np.ndarray, np.ndarray]:
+    """Tanh-sinh (double-exponential) nodes and weights on (0, 1), read-only.
+
+    v = (1 + tanh((pi/2) sinh(t))) / 2 for t = -span .. span in ``step``: integrands with algebraic
+    singularities at either end (the plane solver's (1 - x)^(alpha - 1/2), |x - c|^(1/2 - alpha)) converge
+    double-exponentially; nodes that round to 0 or 1 are dropped.
+    """
+    t = np.arange(-span, span + 0.5 * step, step)
+    u = 0.5 * np.pi * np.sinh(t)
+    v = 0.5 * (1.0 + np.tanh(u))
+    w = 0.25 * np.pi * step * np.cosh(t) / np.cosh(u) ** 2
+    keep = (v > 0.0) & (v < 1.0)
+    v, w = v[keep], w[keep]
+    v.setflags(write=False)
+    w.setflags(write=False)
+    return v, w

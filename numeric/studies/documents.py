@@ -8,7 +8,9 @@ Computes:
   mpmath, fast against precise evaluations), and in §2.3 the check of every expansion
   against the full solution (``numeric.studies.expansion_checks``);
 - ``figures/``: the paper's figures 2-6 redrawn from our solutions and figures the paper
-  lacks (``numeric.studies.figure_plots``), PNG with the plotted data as CSV beside each.
+  lacks (``numeric.studies.figure_plots``), PNG with the plotted data as CSV beside each;
+- ``plane_strain.md``: the plane-strain strip punch and cylinder (part "P" of the registry) with the
+  measured checks of ``numeric.studies.plane_checks``, and its figures (``numeric.studies.plane_figures``).
 
 ``regenerate(directory, fast=, check=)`` writes them (or, with ``check``, names the stale
 ones); ``fast`` leaves the solver-computed blocks of the documents and the figures as
@@ -29,11 +31,14 @@ from collections.abc import Callable
 from pathlib import Path
 
 from asymptotics.document import agrees, blocks_of, join, render_part, text_of
+from asymptotics.plane import EXACT_RELATION
 
 from numeric.studies.expansion_checks import ExpansionStudy, expansion_study
 from numeric.studies.expansion_report import plot_expansion_errors, render_markdown
 from numeric.studies.figure_plots import write_figures
 from numeric.studies.paper_tables import render
+from numeric.studies.plane_checks import plane_checks_markdown
+from numeric.studies.plane_figures import write_plane_figures
 
 __all__ = ["PART_DOCUMENTS", "source_derivations", "part_blocks", "documents", "regenerate"]
 
@@ -43,6 +48,7 @@ PART_DOCUMENTS = {
                                "fig5_flat_punch_stresses", "slip_displacement", "expansion_errors")),
     "3": ("section_3.md", ("fig6_sphere_stresses", "sphere_indentation")),
     "B": ("appendix_b.md", ()),
+    "P": ("plane_strain.md", ("plane_stick_width", "plane_stresses")),
 }
 
 
@@ -65,6 +71,9 @@ def part_blocks(name: str, study: ExpansionStudy | None = None) -> list[tuple[st
     extra: dict[str, str | None] = {}
     if name == "2.3":
         extra["expansion-checks"] = None if study is None else render_markdown(study)
+    if name == "P":  # the plane-strain measurements, computed whenever the solver runs (study given)
+        extra["exact-relation"] = EXACT_RELATION
+        extra["plane-checks"] = None if study is None else plane_checks_markdown()
     if figures:
         extra["figures"] = _figure_block(figures)
     return render_part(name, extra)
@@ -87,9 +96,10 @@ def documents(study: ExpansionStudy | None) -> dict[str, Callable[[str], str]]:
 def _write_figures(directory: Path, study: ExpansionStudy) -> list[Path]:
     figures = directory / "figures"
     figures.mkdir(exist_ok=True)
+    plane = write_plane_figures(figures)
     paths = write_figures(figures)
     plot_expansion_errors(str(figures / "expansion_errors.png"), study)
-    return [*paths, figures / "expansion_errors.png"]
+    return [*plane, *paths, figures / "expansion_errors.png"]
 
 
 def regenerate(directory: Path, *, fast: bool, check: bool,

@@ -1,0 +1,137 @@
+"""Physical units for the plane-strain contacts: a cylinder (line contact) and a rigid strip punch, with friction.
+
+Give the load per unit length P (N/m), the elastic constants (``numeric.app.contact.MaterialPair``: a half-space
+and an optional elastic indenter, gamma_bar of [S75]'s footnote) and the friction coefficient; get the contact
+half-width a, the stick half-width c a, the surface tractions in Pa with their maxima, the slip, and Hertz's values.
+
+Scaling (``numeric.solutions.plane_power_law``): tractions sigma = (P/a) p(x), q likewise; with M = 1/((1 - nu1)/G1 +
+(1 - nu2)/G2) = E*/2, the cylinder of radius R carries P = M a^2/(K R), so a = sqrt(K R P / M); Hertz (K0 = 2/pi):
+a = sqrt(4 R P/(pi E*)), p_max = 2 P/(pi a). Slip: the tangential surface displacement of the half-space relative to
+the indenter, (P/M) u(x) for the strip; for the cylinder each load increment dP is a strip punch of the current
+width, so the slip rate in the slip zones is du/dP = u_strip(x)/M (m per N/m). The indentation depth of a
+half-plane is not defined (logarithmic), so no approach or stiffness is reported. gamma_bar < 0 (the indenter the
+more compressible): the mirror solution, shear and slip change sign.
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from numeric.app.contact import Elastic, MaterialPair
+from numeric.solutions.plane_power_law import plane_power_law
+from numeric.solutions.plane_punch import strip_punch
+from numeric.solutions.plane_solver import DEFAULT_LEVEL
+
+__all__ = ["LineContact", "press_cylinder", "press_strip"]
+
+
+@dataclass(frozen=True, slots=True)
+class LineContact:
+    """A plane-strain contact in SI units (lengths m, tractions Pa, load per length N/m).
+
+    ``frictionless_*`` are the values without friction (Hertz's cylinder; Sadowsky's strip, whose a is the same).
+    ``slip_edge``: the slip at x = a (strip: m; cylinder: rate du/dP at x = a, m per N/m). The strip's pressure and
+    shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there."""
+
+    shape: str
+    size: float
+    materials: MaterialPair
+    mu: float
+    load: float
+    gamma: float
+    c: float
+    half_width: float
+    stick_half_width: float
+    max_pressure: float
+    max_pressure_at: float
+    centre_pressure: float
+    max_shear: float
+    max_shear_at: float
+    slip_edge: float
+    frictionless_half_width: float
+    frictionless_max_pressure: float
+    frictionless_centre_pressure: float
+    error: float
+    route: str
+
+    def to_dict(self) -> dict:
+        """JSON-ready (SI units; infinities as None)."""
+        out = {}
+        for name in self.__slots__:
+            value = getattr(self, name)
+            if name == "materials":
+                value = {"half_space": {"G": value.half_space.G, "nu": value.half_space.nu},
+                         "indenter": None if value.indenter is None else {"G": value.indenter.G, "nu": value.indenter.nu},
+                         "reduced_modulus": value.reduced_modulus}
+            elif isinstance(value, float) and not math.isfinite(value):
+                value = None
+            out[name] = value
+        return out
+
+
+def _checked_positive(value: float, name: str, what: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} ({what}) must be a number, got {value!r}") from None
+    if not (math.isfinite(v) and v > 0.0):
+        raise ValueError(f"{name} ({what}) must be finite and > 0, got {value!r}")
+    return v
+
+
+def _pair(half_space: Elastic, indenter: Elastic | None) -> tuple[MaterialPair, float, float]:
+    pair = MaterialPair(half_space, indenter)
+    g = pair.gamma
+    return pair, abs(g), -1.0 if g < 0.0 else 1.0
+
+
+def _maximum(f, c: float) -> tuple[float, float]:
+    """max of f on [0, 1) from a grid refined toward c and 1 (the kinks and the edge), and where."""
+    x = np.unique(np.concatenate([np.linspace(0.0, 0.999, 1000), c + np.linspace(-0.02, 0.02, 81),
+                                  1.0 - np.geomspace(1e-2, 1e-6, 40)]))
+    x = x[(x >= 0.0) & (x < 1.0)]
+    values = np.asarray(f(x))
+    k = int(np.argmax(values))
+    return float(values[k]), float(x[k])
+
+
+def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
+                   level: int = DEFAULT_LEVEL) -> LineContact:
+    """A cylinder of radius R (m) pressed with load per unit length P (N/m): the plane-strain Hertz contact with friction."""
+    R = _checked_positive(radius, "radius", "cylinder radius, m")
+    P = _checked_positive(load, "load", "load per unit length, N/m")
+    pair, g, sign = _pair(half_space, indenter)
+    h = plane_power_law(2, gamma=g, mu=mu, level=level)
+    M = pair.modulus
+    a = math.sqrt(h.load_factor * R * P / M)
+    a_h = math.sqrt(2.0 * R * P / (math.pi * M))
+    scale = P / a
+    pmax, pmax_at = _maximum(h.pressure, h.c)
+    qmax, qmax_at = _maximum(lambda x: np.asarray(h.shear(x)), h.c)
+    slip = float(h.flat.slip(1.0)) / M
+    p_h = 2.0 * P / (math.pi * a_h)
+    return LineContact("cylinder", R, pair, float(mu), P, pair.gamma, h.c, a, h.c * a, scale * pmax, pmax_at * a,
+                       scale * float(h.pressure(0.0)), sign * scale * qmax, qmax_at * a, sign * slip, a_h, p_h, p_h,
+                       h.flat.error, h.flat.route)
+
+
+def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
+                level: int = DEFAULT_LEVEL) -> LineContact:
+    """A rigid flat strip punch of half-width a (m) pressed with load per unit length P (N/m), with friction."""
+    a = _checked_positive(half_width, "half_width", "strip half-width, m")
+    P = _checked_positive(load, "load", "load per unit length, N/m")
+    pair, g, sign = _pair(half_space, indenter)
+    s = strip_punch(gamma=g, mu=mu, level=level)
+    scale = P / a
+    slip = float(s.slip(1.0)) * P / pair.modulus
+    return LineContact("strip", a, pair, float(mu), P, pair.gamma, s.c, a, s.c * a, math.inf, a,
+                       scale * float(s.pressure(0.0)), math.inf, a, sign * slip, a, math.inf, P / (math.pi * a),
+                       s.error, s.route)

@@ -1,0 +1,523 @@
+"""Finite Hilbert transforms of the plane solver's element functions (the Cauchy kernel of plane strain).
+
+The plane-strain surface relations (``asymptotics.plane``) carry H f(x) = (1/pi) PV int f(t) dt / (t - x).
+On an element t = a + sigma L s, s in [0, 1], with x = a + sigma L y, dt / (t - x) = ds / (s - y) for
+either orientation sigma, so all that is needed is
+
+    I_j(y) = PV int_0^1 w(s) P_j(2 s - 1) ds / (s - y),        j = 0 .. K,
+
+for the three weights of the basis (``Family``):
+
+- ``PLAIN``, w = 1: I_j(y) = -2 Q_j(2 y - 1) (Neumann's integral), with Q_j the Legendre function of the
+  second kind (Ferrers' on the cut). ``legendre_q01``: forward recurrence on the cut and just off it,
+  where the dominant solution P_j grows slowly (rho^(2K) <= FORWARD_GROWTH, rho = |eta| + sqrt(eta^2 - 1));
+  elsewhere Miller's backward recurrence of the ratios Q_j / Q_(j-1) (the continued fraction of the
+  minimal solution), started far enough above K that the truncation error rho^(-2m) is below 1e-17.
+- ``HBETA``, w = h_beta(s) = (s^beta - 1)/beta, 0 <= beta <= 1/2 (log s at beta = 0): the singular family at
+  the stick-slip point, written so that it stays a well-conditioned basis function as beta -> 0 (mu -> inf).
+- ``POWER``, w = s^lam, -1 < lam <= 0: the edge family (1 - x)^(alpha - 1/2).
+
+For the weighted families: points inside the element, I_j = int w D_j ds + P_j(y) V_w(y) with the divided
+difference D_j = (P_j(s) - P_j(y))/(s - y) (a polynomial, by its own recurrence) and V_w(y) = PV int_0^1 w/(s - y)
+in closed form (``power_cauchy``, ``hbeta_cauchy``); points outside but within ``FAR`` of the element,
+a fixed composite rule graded toward the near end (pieces of ratio 1/2, so a pole at distance d from an
+end is at least three half-lengths from the centre of every piece longer than d: Gauss error 5.83^-(2n));
+points beyond ``FAR``, the kernel interpolated at ``CHEBYSHEV_POINTS`` Chebyshev points
+and the moments of the basis against the Lagrange polynomials, once per family.
+
+Accuracy (``tests/test_plane_cauchy.py``, against 30-digit mpmath): 1e-15 of max(1, |I_j|) at points
+from 1e-12 of an element end to 100 element lengths away, for K <= 20 and every beta, lam in range.
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from scipy import linalg, special
+
+from numeric.core.charts import h_beta
+from numeric.core.quadrature import gauss_legendre
+
+__all__ = ["PLAIN", "HBETA", "POWER", "Family", "FAR", "CHEBYSHEV_POINTS", "FORWARD_GROWTH", "legendre_q01",
+           "legendre01", "gauss_jacobi01", "power_cauchy", "hbeta_cauchy", "family_weight", "family_cauchy",
+           "family_integrals", "family_values", "mode_cauchy"]
+
+PLAIN, HBETA, POWER = 0, 1, 2
+"""Weights of a family: 1, h_beta(s), s^lam."""
+
+FAR = 0.5
+"""Points farther than this (in element lengths) from an element: interpolated kernel (error 3.7^-(2 x 16))."""
+CHEBYSHEV_POINTS = 34
+"""Chebyshev points of the interpolated kernel 1/(s - y), |y - [0,1]| >= FAR (rho >= 2 + sqrt 3)."""
+FORWARD_GROWTH = 30.0
+"""Forward recurrence of Q_j off the cut while rho^(2K) stays below this (a relative loss of 30 ulp at worst)."""
+_PIECES = 60  # graded pieces toward an end: poles down to 2^-60 ~ 1e-18 of the element length
+_PIECE_NODES = 10  # Gauss nodes per graded piece: 5.83^-20 = 5e-16
+_HBETA_PIECES = 66  # h_beta at 0: the innermost piece [0, 2^-66] is dropped (|int| < 1e-18)
+_SERIES_TERMS = 60  # |y| <= 1/2: tails sum y^k to 2^-60
+_SMALL = 0.05  # below, the cot/csc remainders by their zeta series
+_ZETA_EVEN = np.array([special.zeta(2 * k) for k in range(1, 14)])
+
+
+@dataclass(frozen=True, slots=True)
+class Family:
+    """Weight w(s) (``PLAIN``, ``HBETA`` with parameter beta, ``POWER`` with parameter lam) times P_0..P_degree."""
+
+    kind: int
+    parameter: float
+    degree: int
+
+
+def legendre01(k: int, s: np.ndarray) -> np.ndarray:
+    """P_0 .. P_k (2 s - 1), stacked on the last axis."""
+    x = 2.0 * np.asarray(s, dtype=float) - 1.0
+    out = np.empty(x.shape + (k + 1,))
+    out[..., 0] = 1.0
+    if k >= 1:
+        out[..., 1] = x
+    for n in range(1, k):
+        out[..., n + 1] = ((2 * n + 1) * x * out[..., n] - n * out[..., n - 1]) / (n + 1)
+    return out
+
+
+def legendre_q01(y: np.ndarray, k: int) -> np.ndarray:
+    """Q_0 .. Q_k(2 y - 1) for real y != 0, 1, stacked on the last axis: Ferrers' functions for 0 < y < 1,
+    the second-kind functions outside (Q_j ~ rho^-(j+1)). Q_0 = log|y / (y - 1)| / 2 is formed from y (not
+    from eta = 2 y - 1, whose rounding would cost |log| digits next to the ends)."""
+    y = np.asarray(y, dtype=float)
+    out = np.empty(y.shape + (k + 1,))
+    inside = (y > 0.0) & (y < 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        log_one_minus = np.where(y < 0.5, np.log1p(-np.where(y < 0.5, y, 0.0)), np.log(np.abs(1.0 - y)))
+        out[..., 0] = 0.5 * (np.log(np.abs(y)) - log_one_minus)
+        a = np.abs(2.0 * y - 1.0)
+        rho = np.where(inside, 1.0, a + 2.0 * np.sqrt(np.abs(y * (y - 1.0))))
+    forward = inside | (2 * k * np.log(rho) <= math.log(FORWARD_GROWTH))
+    if k >= 1:
+        x = 2.0 * y[forward] - 1.0
+        q = np.empty(x.shape + (k + 1,))
+        q[..., 0] = out[forward][..., 0]
+        q[..., 1] = x * q[..., 0] - 1.0
+        for n in range(1, k):
+            q[..., n + 1] = ((2 * n + 1) * x * q[..., n] - n * q[..., n - 1]) / (n + 1)
+        out[forward] = q
+        miller = ~forward
+        if np.any(miller):
+            idx = np.flatnonzero(miller.ravel())
+            steps = np.ceil(20.0 / np.log(rho.ravel()[idx])).astype(int) + 2
+            bucket = np.minimum(2 ** np.ceil(np.log2(steps)).astype(int), 4096)
+            flat = out.reshape(-1, k + 1)
+            for m in np.unique(bucket):
+                sel = idx[bucket == m]
+                flat[sel] = _miller(2.0 * y.ravel()[sel] - 1.0, k, int(m), flat[sel, 0])
+    return out
+
+
+def _miller(eta: np.ndarray, k: int, m: int, q0: np.ndarray) -> np.ndarray:
+    """Q_0..Q_k outside the cut from the ratios r_n = Q_n/Q_(n-1) = n / ((2n + 1) eta - (n + 1) r_(n+1)), r_(k+m+1) = 0."""
+    r = np.zeros(eta.shape)
+    ratios = np.empty(eta.shape + (k + 1,))
+    for n in range(k + m, 0, -1):
+        r = n / ((2 * n + 1) * eta - (n + 1) * r)
+        if n <= k:
+            ratios[..., n] = r
+    ratios[..., 0] = q0
+    return np.cumprod(ratios, axis=-1)
+
+
+@lru_cache(maxsize=256)
+def gauss_jacobi01(n: int, lam: float) -> tuple[np.ndarray, np.ndarray]:
+    """n-point Gauss rule on [0, 1] for the weight s^lam (lam > -1): nodes, weights (read-only).
+
+    Golub-Welsch on the Jacobi matrix of the weight (1 + x)^lam on [-1, 1] (scipy's eigh_tridiagonal): the
+    moments int s^(lam + k), k < 2n, come out to 2e-14 relative at n = 60 (``roots_jacobi``: 2e-13)."""
+    if lam == 0.0:
+        x, w = gauss_legendre(n)
+        s, ws = 0.5 * (x + 1.0), 0.5 * w
+    else:
+        k = np.arange(n, dtype=float)
+        ab = k * 2.0 + lam
+        diag = np.where(k == 0, lam / (lam + 2.0), lam * lam / np.where(k == 0, 1.0, ab * (ab + 2.0)))
+        m = np.arange(1, n, dtype=float)
+        abm = 2.0 * m + lam
+        off = np.sqrt(4.0 * m * m * (m + lam) ** 2 / (abm**2 * (abm + 1.0) * (abm - 1.0)))
+        x, vectors = linalg.eigh_tridiagonal(diag, off)
+        s, ws = 0.5 * (x + 1.0), vectors[0] ** 2 / (lam + 1.0)
+    s, ws = np.array(s), np.array(ws)
+    s.setflags(write=False)
+    ws.setflags(write=False)
+    return s, ws
+
+
+def _pi_cot(lam: float) -> float:
+    """pi cot(pi lam) for -1 < lam < 1, lam != 0; exactly 0 at lam = -1/2 (as -pi tan(pi (lam + 1/2)))."""
+    if lam < -0.25:
+        return -math.pi * math.tan(math.pi * (lam + 0.5))
+    return math.pi / math.tan(math.pi * lam)
+
+
+def _cot_remainder(lam: float) -> float:
+    """1/lam - pi cot(pi lam), exact to rounding as lam -> 0."""
+    if abs(lam) < _SMALL:
+        return float(2.0 * np.sum(_ZETA_EVEN * lam ** (2 * np.arange(1, _ZETA_EVEN.size + 1) - 1)))
+    return 1.0 / lam - _pi_cot(lam)
+
+
+def _csc_remainder(lam: float) -> float:
+    """1/lam - pi / sin(pi lam), exact to rounding as lam -> 0."""
+    if abs(lam) < _SMALL:
+        k = np.arange(1, _ZETA_EVEN.size + 1)
+        return float(-2.0 * np.sum((1.0 - 2.0 ** (1 - 2 * k)) * _ZETA_EVEN * lam ** (2 * k - 1)))
+    return 1.0 / lam - math.pi / math.sin(math.pi * lam)
+
+
+def _cot_remainder_over(beta: float) -> float:
+    """(1/beta - pi cot(pi beta)) / beta, pi^2/3 at beta = 0."""
+    if abs(beta) < _SMALL:
+        return float(2.0 * np.sum(_ZETA_EVEN * beta ** (2 * np.arange(1, _ZETA_EVEN.size + 1) - 2)))
+    return _cot_remainder(beta) / beta
+
+
+def _csc_remainder_over(beta: float) -> float:
+    """(1/beta - pi / sin(pi beta)) / beta, -pi^2/6 at beta = 0."""
+    if abs(beta) < _SMALL:
+        k = np.arange(1, _ZETA_EVEN.size + 1)
+        return float(-2.0 * np.sum((1.0 - 2.0 ** (1 - 2 * k)) * _ZETA_EVEN * beta ** (2 * k - 2)))
+    return _csc_remainder(beta) / beta
+
+
+def _second_remainder(z: np.ndarray) -> np.ndarray:
+    """(e^z - 1 - z)/z^2 (1/2 at z = 0), without cancellation."""
+    z = np.asarray(z, dtype=float)
+    small = np.abs(z) < 0.5
+    out = np.empty(z.shape)
+    zs = z[small]
+    term, total = np.full(zs.shape, 0.5), np.full(zs.shape, 0.5)
+    for n in range(3, 22):
+        term = term * zs / n
+        total = total + term
+    out[small] = total
+    zl = z[~small]
+    out[~small] = (np.expm1(zl) - zl) / (zl * zl)
+    return out
+
+
+def power_cauchy(lam: float, y: np.ndarray) -> np.ndarray:
+    """V_lam(y) = PV int_0^1 s^lam ds / (s - y) for lam > -1 and real y not 0 or 1.
+
+    |y| <= 1/2: V = A(y) - sum_k y^k / (k - lam) (the tail int_1^inf s^lam / (s - y), continued
+    analytically in lam), A = -pi cot(pi lam) y^lam (y > 0) or -pi |y|^lam / sin(pi lam) (y < 0),
+    the k = 0 term combined with A so that lam -> 0 (log|y| in the limit) loses nothing.
+    y > 1/2: [0, 1/4] by Gauss-Jacobi, [1/4, 1] as int (s^lam - y^lam)/(s - y) + y^lam log|(1 - y)/(1/4 - y)|.
+    y < -1/2: Gauss-Jacobi on [0, 1] (the pole is >= 1/2 away).
+    """
+    y = np.asarray(y, dtype=float)
+    if lam == 0.0:
+        return np.log(np.abs((1.0 - y) / y))
+    out = np.empty(y.shape)
+    small = np.abs(y) <= 0.5
+    if np.any(small):
+        ys = y[small]
+        log_ay = np.log(np.abs(ys))
+        remainder = np.where(ys > 0.0, _cot_remainder(lam), _csc_remainder(lam))
+        power = np.exp(lam * log_ay)
+        # A(y) + 1/lam: as remainder y^lam - (y^lam - 1)/lam where lam log|y| is small (lam -> 0), else directly
+        # (where y^lam is large the two terms of the first form cancel)
+        direct = np.abs(lam * log_ay) > 1.0
+        factor = np.where(ys > 0.0, _pi_cot(lam), math.pi / math.sin(math.pi * lam))
+        head = np.where(direct, 1.0 / lam - factor * power, remainder * power - special.expm1(lam * log_ay) / lam)
+        out[small] = head - _tail(ys, 1.0 / (np.arange(1, _SERIES_TERMS) - lam))
+    right = y > 0.5
+    if np.any(right):
+        yr = y[right]
+        s1, w1 = gauss_jacobi01(30, lam)
+        part1 = (0.25 ** (lam + 1.0)) * ((w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1))
+        s2, w2 = _quarter_to_one()
+        log_ratio = np.log(s2[None, :] / yr[:, None])
+        dd = yr[:, None] ** lam * lam * log_ratio * special.exprel(lam * log_ratio) / (s2[None, :] - yr[:, None])
+        dd = np.where(s2[None, :] == yr[:, None], lam * yr[:, None] ** (lam - 1.0), dd)
+        out[right] = part1 + dd @ w2 + yr**lam * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
+    left = y < -0.5
+    if np.any(left):
+        s, w = gauss_jacobi01(40, lam)
+        out[left] = (w[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
+    return out
+
+
+def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
+    """W_beta(y) = PV int_0^1 h_beta(s) ds / (s - y), h_beta = (s^beta - 1)/beta (log s at beta = 0), 0 <= beta <= 1/2.
+
+    (V_beta - V_0)/beta of ``power_cauchy``, arranged so that nothing cancels as beta -> 0:
+    0 < |y| <= 1/2: W = g y^beta - log(y)^2 E(beta log|y|) - sum_k y^k / (k (k - beta)), with
+    g = (1/beta - pi cot(pi beta))/beta (y > 0) or (1/beta - pi/sin(pi beta))/beta (y < 0) and
+    E(z) = (e^z - 1 - z)/z^2; y > 1/2: [0, 1/4] by a rule graded toward 0, [1/4, 1] by subtracting h_beta(y)
+    (the divided difference y^beta log(s/y) exprel(beta log(s/y)) / (s - y)); y < -1/2: the graded rule.
+    """
+    y = np.asarray(y, dtype=float)
+    out = np.empty(y.shape)
+    small = np.abs(y) <= 0.5
+    if np.any(small):
+        ys = y[small]
+        log_ay = np.log(np.abs(ys))
+        g = np.where(ys > 0.0, _cot_remainder_over(beta), _csc_remainder_over(beta))
+        k = np.arange(1, _SERIES_TERMS)
+        out[small] = g * np.exp(beta * log_ay) - log_ay**2 * _second_remainder(beta * log_ay) - _tail(ys, 1.0 / (k * (k - beta)))
+    right = y > 0.5
+    if np.any(right):
+        yr = y[right]
+        s1, w1 = _graded_toward_zero(_HBETA_PIECES)
+        s1, w1 = 0.25 * s1, 0.25 * w1
+        part1 = (w1 * h_beta(beta, s1))[None, :] @ (1.0 / (s1[:, None] - yr[None, :]))
+        s2, w2 = _quarter_to_one()
+        log_ratio = np.log(s2[None, :] / yr[:, None])
+        dd = yr[:, None] ** beta * log_ratio * special.exprel(beta * log_ratio) / (s2[None, :] - yr[:, None])
+        dd = np.where(s2[None, :] == yr[:, None], yr[:, None] ** (beta - 1.0), dd)
+        out[right] = part1[0] + dd @ w2 + h_beta(beta, yr) * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
+    left = y < -0.5
+    if np.any(left):
+        s, w = _graded_toward_zero(_HBETA_PIECES)
+        out[left] = ((w * h_beta(beta, s))[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
+    return out
+
+
+def mode_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
+    """PV int_0^1 m(s) ds / (s - y) for the generic mode m(s) = beta s^(beta - 1), 0 <= beta <= 1/2, y != 0, 1.
+
+    m has unit integral and tends to the delta function at s = 0 as beta -> 0 (then the value is -1/y).
+    |y| <= 1/2: beta V_(beta-1)(y) from the series of ``power_cauchy``, with pi beta cot(pi beta) (y > 0) or
+    pi beta / sin(pi beta) (y < 0) as factors; otherwise, on [0, a] (a = 1/4 for y > 1/2, 1 for y < -1/2),
+    int m/(s - y) = (beta/y) int_0^a s^beta ds/(s - y) - a^beta / y (no weight singular at beta -> 0), and
+    for y > 1/2 the rest [1/4, 1] by subtracting m(y).
+    """
+    y = np.asarray(y, dtype=float)
+    out = np.empty(y.shape)
+    small = np.abs(y) <= 0.5
+    if np.any(small):
+        ys = y[small]
+        ay = np.abs(ys)
+        pb = math.pi * beta
+        # y > 0: -pi beta cot(pi beta) y^(beta - 1) (the cotangent as tan(pi (1/2 - beta)), exact 0 at beta = 1/2);
+        # y < 0: +pi beta |y|^(beta - 1) / sin(pi beta); both factors 1 at beta = 0
+        cot_factor = 1.0 if beta == 0.0 else (pb * math.tan(math.pi * (0.5 - beta)) if beta > 0.25 else pb / math.tan(pb))
+        csc_factor = 1.0 if beta == 0.0 else pb / math.sin(pb)
+        k = np.arange(1, _SERIES_TERMS)
+        head = np.where(ys > 0.0, -cot_factor, csc_factor) * ay ** (beta - 1.0)
+        out[small] = head + beta / (beta - 1.0) - beta * _tail(ys, 1.0 / (k + 1.0 - beta))
+    right = y > 0.5
+    if np.any(right):
+        yr = y[right]
+        s1, w1 = gauss_jacobi01(30, beta)
+        inner = 0.25 ** (beta + 1.0) * (w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1)
+        part1 = (beta / yr) * inner - 0.25**beta / yr
+        s2, w2 = _quarter_to_one()
+        lam = beta - 1.0
+        log_ratio = np.log(s2[None, :] / yr[:, None])
+        dd = yr[:, None] ** lam * lam * log_ratio * special.exprel(lam * log_ratio) / (s2[None, :] - yr[:, None])
+        dd = np.where(s2[None, :] == yr[:, None], lam * yr[:, None] ** (lam - 1.0), dd)
+        out[right] = part1 + beta * (dd @ w2 + yr**lam * np.log(np.abs((1.0 - yr) / (0.25 - yr))))
+    left = y < -0.5
+    if np.any(left):
+        yl = y[left]
+        s, w = gauss_jacobi01(40, beta)
+        out[left] = (beta / yl) * (w[None, :] / (s[None, :] - yl[:, None])).sum(axis=1) - 1.0 / yl
+    return out
+
+
+def _tail(y: np.ndarray, coefficients: np.ndarray) -> np.ndarray:
+    """sum_{k >= 1} coefficients[k - 1] y^k (|y| <= 1/2): the powers by a cumulative product, one matrix product."""
+    powers = np.cumprod(np.broadcast_to(y[:, None], (y.size, coefficients.size)), axis=1)
+    return powers @ coefficients
+
+
+@lru_cache(maxsize=None)
+def _quarter_to_one() -> tuple[np.ndarray, np.ndarray]:
+    """40-point Gauss-Legendre on [1/4, 1]: the divided differences there are analytic but at s = 0 (rho = 3)."""
+    x, w = gauss_legendre(40)
+    return 0.25 + 0.375 * (x + 1.0), 0.375 * w
+
+
+@lru_cache(maxsize=None)
+def _graded_toward_zero(pieces: int, nodes: int = _PIECE_NODES, extra: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre on [2^-(j+1), 2^-j], j < pieces (the piece [0, 2^-pieces] left out), with nodes + max(0, extra - j)
+    nodes on piece j (a polynomial factor of degree 2 extra is integrated on the long pieces too): read-only."""
+    xs, ws = [], []
+    for j in range(pieces):
+        x, w = gauss_legendre(nodes + max(0, extra - j))
+        lo = 2.0 ** -(j + 1)
+        xs.append(lo + 0.5 * lo * (x + 1.0))  # half-length lo / 2
+        ws.append(0.5 * lo * w)
+    s, w = np.concatenate(xs), np.concatenate(ws)
+    s.setflags(write=False)
+    w.setflags(write=False)
+    return s, w
+
+
+def family_weight(family: Family, s: np.ndarray) -> np.ndarray:
+    """w(s) of the family (0 at s = 0 for lam < 0 is not used: rules never put a node there)."""
+    if family.kind == PLAIN:
+        return np.ones(np.shape(s))
+    if family.kind == HBETA:
+        return h_beta(family.parameter, s)
+    return np.asarray(s, dtype=float) ** family.parameter
+
+
+def family_values(family: Family, s: np.ndarray) -> np.ndarray:
+    """w(s) P_j(2 s - 1), j = 0 .. degree: shape s.shape + (degree + 1,)."""
+    return family_weight(family, s)[..., None] * legendre01(family.degree, s)
+
+
+@lru_cache(maxsize=256)
+def _lean_rule(family: Family) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes and weights (w folded in) that integrate w(s) x polynomials of degree <= degree + 2 CHEBYSHEV_POINTS."""
+    n = family.degree // 2 + CHEBYSHEV_POINTS + 2
+    if family.kind == PLAIN:
+        s, ws = gauss_jacobi01(n, 0.0)
+        return s, ws
+    if family.kind == POWER:
+        return gauss_jacobi01(n, family.parameter)
+    s, ws = _graded_toward_zero(_HBETA_PIECES, 12)
+    return s, ws * h_beta(family.parameter, s)
+
+
+@lru_cache(maxsize=None)
+def _chebyshev01(r: int = CHEBYSHEV_POINTS) -> tuple[np.ndarray, np.ndarray]:
+    """Chebyshev points of the first kind on [0, 1] and their barycentric weights."""
+    k = np.arange(r)
+    theta = (2 * k + 1) * math.pi / (2 * r)
+    s = 0.5 * (1.0 - np.cos(theta))
+    bary = (-1.0) ** k * np.sin(theta)
+    s.setflags(write=False)
+    bary.setflags(write=False)
+    return s, bary
+
+
+@lru_cache(maxsize=64)
+def _lagrange_legendre(nodes: tuple[float, ...] | int, degree: int) -> tuple[np.ndarray, np.ndarray]:
+    """At the nodes of a rule: the Lagrange polynomials of the Chebyshev points (nodes, r) and P_0..P_degree."""
+    s = _graded_toward_zero(_HBETA_PIECES, 12)[0] if isinstance(nodes, int) else np.array(nodes)
+    xk, bary = _chebyshev01()
+    terms = bary[None, :] / (s[:, None] - xk[None, :])
+    return terms / terms.sum(axis=1, keepdims=True), legendre01(degree, s)
+
+
+@lru_cache(maxsize=256)
+def _moments(family: Family) -> np.ndarray:
+    """M[i, j] = int_0^1 l_i(s) w(s) P_j(2s - 1) ds for the Lagrange polynomials l_i of the Chebyshev points (the
+    h_beta rule's nodes do not depend on beta: their Lagrange and Legendre values are kept)."""
+    s, ws = _lean_rule(family)
+    lagrange, legendre = _lagrange_legendre(0 if family.kind == HBETA else tuple(s), family.degree)
+    out = (lagrange * ws[:, None]).T @ legendre
+    out.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=256)
+def _outside_rule(family: Family, toward_one: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Fixed nodes s, their distance d from the near end (exact), weights (w folded in) and the Legendre values,
+    for points outside the element within FAR of an end.
+
+    Toward 0 (the weight's end): pieces [2^-(j+1), 2^-j] (j < 66 for h_beta, 60 otherwise), and for ``POWER``
+    the innermost [0, 2^-60] by Gauss-Jacobi (``HBETA``'s innermost piece is ``_innermost_hbeta``). Toward 1:
+    the family's lean rule on [0, 1/2] (the pole is >= 1/2 away) and pieces [1 - 2^-j, 1 - 2^-(j+1)], j >= 1,
+    their distance 2^-(j+1) ... 2^-j from 1 kept exact (a double s next to 1 would round it)."""
+    if not toward_one:
+        s, ws = _graded_toward_zero(_PIECES if family.kind != HBETA else _HBETA_PIECES, extra=family.degree // 2 + 1)
+        ws = ws * family_weight(family, s)
+        if family.kind == POWER:
+            sj, wj = gauss_jacobi01(_PIECE_NODES, family.parameter)
+            h = 2.0 ** -_PIECES
+            s, ws = np.concatenate([h * sj, s]), np.concatenate([h ** (family.parameter + 1.0) * wj, ws])
+        d = s
+    else:
+        if family.kind == HBETA:
+            u, wu = _graded_toward_zero(_HBETA_PIECES, 12)
+            s0, w0 = 0.5 * u, 0.5 * wu * h_beta(family.parameter, 0.5 * u)
+        else:
+            u, wu = _lean_rule(family)
+            s0, w0 = 0.5 * u, wu * 0.5 ** ((family.parameter if family.kind == POWER else 0.0) + 1.0)
+        t, wt = _graded_toward_zero(_PIECES, extra=family.degree // 2 + 2)
+        keep = t < 0.5  # pieces [2^-(j+1), 2^-j] for j >= 1, mapped to 1 - t
+        s = np.concatenate([s0, 1.0 - t[keep]])
+        d = np.concatenate([1.0 - s0, t[keep]])
+        ws = np.concatenate([w0, wt[keep] * family_weight(family, 1.0 - t[keep])])
+    return _frozen(s), _frozen(d), _frozen(ws), _frozen(legendre01(family.degree, s))
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.array(a)
+    a.setflags(write=False)
+    return a
+
+
+def _innermost_hbeta(beta: float, k: int, y: np.ndarray) -> np.ndarray:
+    """int_0^h h_beta(s) P_j(2s - 1) ds / (s - y), h = 2^-66, for y < -2h: P_j(2s - 1) = (-1)^j there (to h j^2),
+    1/(s - y) = -sum_n s^n / y^(n+1), and int_0^h h_beta s^n = h^(n+1) (h_beta(h)/(beta + n + 1) - 1/((n + 1)(beta + n + 1)))."""
+    h = 2.0 ** -_HBETA_PIECES
+    n = np.arange(8)
+    moments = h ** (n + 1.0) * (float(h_beta(beta, np.array(h))) / (beta + n + 1) - 1.0 / ((n + 1) * (beta + n + 1)))
+    total = -(moments[None, :] * (1.0 / y[:, None]) ** (n[None, :] + 1)).sum(axis=1)
+    return total[:, None] * (-1.0) ** np.arange(k + 1)[None, :]
+
+
+def _divided_differences(k: int, s: np.ndarray, y: np.ndarray, Py: np.ndarray) -> np.ndarray:
+    """D_j(s, y) = (P_j(2s-1) - P_j(2y-1)) / (s - y), j = 0..k, shape broadcast(s, y) + (k+1,).
+
+    From the three-term recurrence: D_{j+1} = ((2j+1)(x_s D_j + 2 P_j(y)) - j D_{j-1}) / (j + 1), D_0 = 0, D_1 = 2.
+    """
+    xs = 2.0 * s - 1.0
+    out = np.zeros(np.broadcast(s, y).shape + (k + 1,))
+    if k >= 1:
+        out[..., 1] = 2.0
+    for j in range(1, k):
+        out[..., j + 1] = ((2 * j + 1) * (xs * out[..., j] + 2.0 * Py[..., j]) - j * out[..., j - 1]) / (j + 1)
+    return out
+
+
+def family_cauchy(family: Family, y: np.ndarray) -> np.ndarray:
+    """I_j(y) = PV int_0^1 w(s) P_j(2s - 1) ds / (s - y), j = 0 .. degree, for y not 0 or 1: shape y.shape + (degree + 1,)."""
+    y = np.asarray(y, dtype=float)
+    k = family.degree
+    if family.kind == PLAIN:
+        return -2.0 * legendre_q01(y, k)
+    out = np.empty(y.shape + (k + 1,))
+    inside = (y > 0.0) & (y < 1.0)
+    far = (y < -FAR) | (y > 1.0 + FAR)
+    if np.any(far):
+        xk, bary = _chebyshev01()
+        out[far] = (1.0 / (xk[None, :] - y[far][:, None])) @ _moments(family)
+    if np.any(inside):
+        yi = y[inside]
+        if family.kind == POWER:  # D_j has degree j - 1: exact
+            s, ws = gauss_jacobi01(k // 2 + 2, family.parameter)
+        else:
+            s, ws = _graded_toward_zero(_HBETA_PIECES)
+            ws = ws * h_beta(family.parameter, s)
+        Py = legendre01(k, yi)
+        D = _divided_differences(k, s[None, :], yi[:, None], Py[:, None, :])
+        V = power_cauchy(family.parameter, yi) if family.kind == POWER else hbeta_cauchy(family.parameter, yi)
+        out[inside] = np.einsum("n,pnk->pk", ws, D) + Py * V[:, None]
+    for toward_one in (False, True):
+        near = ~inside & ~far & ((y > 1.0) if toward_one else (y < 0.0))
+        if np.any(near):
+            s, d, ws, P = _outside_rule(family, toward_one)
+            gap = (y[near] - 1.0) if toward_one else -y[near]  # distance from the end, exact (Sterbenz)
+            out[near] = (ws[None, :] / (-(d[None, :] + gap[:, None]) if toward_one else (d[None, :] + gap[:, None]))) @ P
+            if toward_one:  # the piece [1 - 2^-60, 1] left out: w(1) P_j(1) int ds/(s - y) = -w(1) log(1 + h/gap)
+                out[near] -= float(family_weight(family, np.array(1.0))) * np.log1p(2.0 ** -_PIECES / gap)[:, None]
+            if family.kind == HBETA and not toward_one:
+                out[near] += _innermost_hbeta(family.parameter, k, y[near])
+    return out
+
+
+def family_integrals(family: Family) -> np.ndarray:
+    """int_0^1 w(s) P_j(2 s - 1) ds, j = 0 .. degree."""
+    s, ws = _lean_rule(family)
+    return ws @ legendre01(family.degree, s)

@@ -1,0 +1,215 @@
+"""Stresses and slip of a strip-punch solution on the plane singular basis.
+
+p and q are evaluated from the basis, so their behaviour at x = c and x = 1 is exact: there is no
+interpolation between nodes and no loss at x = c itself or at 1 - x = 1e-5. The generic mode is left
+out: its amplitude is the eigen residual (below 1e-12 at a converged solution) and its function is
+singular at c.
+
+The slip: with u = u_x G / ((1 - nu) P) (u_x the tangential surface displacement, P the load per
+unit length), du/dx = H q - gamma p (the tangential surface relation, ``asymptotics.plane``), which
+vanishes on the stick zone, so u(x) = int_c^x (H q - gamma p) dt on the slip zone; the integrand
+behaves like (t - c)^beta at c and (1 - t)^(alpha - 1/2) at 1, and is integrated by a composite
+Gauss rule graded toward both ends of [c, x] (``numeric.core.plane_cauchy``'s pieces of ratio 1/2).
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cached_property
+
+import numpy as np
+
+from numeric.core.plane_cauchy import family_values
+from numeric.core.plane_charts import AT_ONE, element_families, locate
+from numeric.core.plane_eigenvalue import PlaneEigensolution
+from numeric.core.plane_operators import PlaneOperators, normal_factor
+from numeric.core.quadrature import gauss_legendre
+
+__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "graded_both_ends", "weighted_tail_integrals"]
+
+SLIP_PIECES = 50
+"""Graded pieces toward each end of [c, x] in the slip integral (down to 2^-50 of its length)."""
+SLIP_NODES = 12
+"""Gauss nodes per piece (the pieces see the end singularities at >= 3 half-lengths: 5.83^-24)."""
+
+
+class PlaneField:
+    """p, q, the slip u and the load of a ``PlaneEigensolution`` (theta = atan(mu gamma))."""
+
+    def __init__(self, solution: PlaneEigensolution) -> None:
+        self.solution = solution
+        sys = solution.system
+        self.layout = sys.layout
+        self.gamma = sys.gamma
+        self.theta = solution.theta
+        self.alpha = sys.alpha
+        self.c = self.layout.c
+        self.gap = self.layout.gap
+        self.n_unknowns = solution.coefficients.size
+        ns = sys.n_stick
+        z = solution.coefficients
+        self.residual = float(z[-1])  # the generic mode's amplitude
+        n = int(solution.operators.starts[-1])
+        self._p = np.zeros(n)  # coefficients of p and q over the whole basis (layout order)
+        self._q = np.zeros(n)
+        self._p[sys.stick_columns] = z[:ns]
+        self._q[sys.stick_columns] = z[ns:2 * ns]
+        R = z[2 * ns:-1]
+        self._p[sys.slip_columns] = normal_factor(self.theta) * R
+        self._q[sys.slip_columns] = (math.sin(self.theta) / self.gamma) * R
+        self._starts = solution.operators.starts
+
+    @property
+    def mu(self) -> float:
+        return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
+
+    @cached_property
+    def load(self) -> float:
+        """int_{-1}^{1} p dx (1 by the normalisation row, to rounding)."""
+        return float(2.0 * self.solution.system.integrals @ self._p)
+
+    def _basis_values(self, x: np.ndarray, side: np.ndarray | None = None) -> np.ndarray:
+        """Every basis function at points 0 <= x <= 1 (rows), 0 off its element."""
+        lay = self.layout
+        pts = locate(lay, x, side)
+        out = np.zeros((x.size, int(self._starts[-1])))
+        for e in np.unique(pts.owner):
+            mine = pts.owner == e
+            col = int(self._starts[e])
+            for fam in element_families(lay, int(e), self.alpha):
+                with np.errstate(divide="ignore", invalid="ignore"):  # the edge weight at x = 1 (set by the caller)
+                    block = family_values(fam, pts.s[mine])
+                out[np.ix_(mine, np.arange(col, col + fam.degree + 1))] = block
+                col += fam.degree + 1
+        return out
+
+    def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p(x) and q(x) for -1 <= x <= 1 (p even, q odd; x = c is the stick side's value, continuous there)."""
+        x = np.asarray(x, dtype=float)
+        ax = np.abs(x).ravel()
+        B = self._basis_values(ax)
+        with np.errstate(invalid="ignore"):
+            p = B @ self._p
+            q = B @ self._q
+        edge = ax == 1.0
+        if np.any(edge):  # (1 - x)^(alpha - 1/2): infinite for mu < inf; at mu = inf p = 0 and q is finite
+            p[edge] = 0.0 if self.theta >= 0.5 * math.pi else math.inf
+            if self.theta < 0.5 * math.pi:
+                q[edge] = math.inf
+        return p.reshape(x.shape), (np.sign(x).ravel() * q).reshape(x.shape)
+
+    def strain(self, t: np.ndarray, offset_from_one: np.ndarray | None = None) -> np.ndarray:
+        """du/dx = H q - gamma p at points c < t < 1 of the slip zone (not at element ends, where single basis
+        functions' transforms are logarithmic); ``offset_from_one``: t - 1 exactly, if known."""
+        t = np.asarray(t, dtype=float)
+        pts = locate(self.layout, t, offset_from_one=offset_from_one)
+        ops = PlaneOperators(self.layout, pts)
+        T = ops.transforms(self.alpha)
+        return T.odd @ self._q - self.gamma * (T.values @ self._p)
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        """u(x) = int_c^|x| (H q - gamma p) dt sgn(x) for -1 <= x <= 1 (0 on the stick zone)."""
+        x = np.asarray(x, dtype=float)
+        ax = np.abs(x).ravel()
+        out = np.zeros(ax.shape)
+        outer = np.flatnonzero(ax > self.c)
+        if outer.size:
+            s, one_minus_s, w = graded_both_ends()
+            length = ax[outer] - self.c  # the offset of x from c
+            nodes = self.c + length[:, None] * s[None, :]
+            # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
+            from_one = (ax[outer] - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
+            ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
+            nodes = np.where(np.isin(nodes, ends), np.nextafter(nodes, 2.0), nodes)
+            values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
+            out[outer] = (values @ w) * length
+        return (np.sign(x).ravel() * out).reshape(x.shape)
+
+
+def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Composite Gauss on [0, 1]: pieces [2^-(j+1), 2^-j] toward 0 and toward 1 (j < SLIP_PIECES), the innermost
+    piece in sigma = sqrt(s) (the strain's worst end behaviour, (1 - t)^(alpha - 1/2), becomes smooth).
+
+    Returns nodes s, their complements 1 - s (exact: next to 1 a double s would round 1 - s) and weights."""
+    return _GRADED
+
+
+def _build_graded() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    x, w = gauss_legendre(SLIP_NODES)
+    lo = 0.5 ** np.arange(2, SLIP_PIECES + 2, dtype=float)  # pieces [lo, 2 lo] within [0, 1/2]
+    s_half = (1.5 * lo)[:, None] + (0.5 * lo)[:, None] * x[None, :]
+    w_half = (0.5 * lo)[:, None] * w[None, :]
+    s_half, w_half = s_half.ravel(), w_half.ravel()
+    # innermost [0, h]: s = h sigma^2, ds = 2 h sigma d sigma, Gauss-Legendre in sigma: exact for smooth integrands
+    # and for s^(-1/2) times smooth (the worst end behaviour), s^lam in between to ~n^-(4 lam + 4) of this piece
+    h = lo[-1]
+    sj, wj = 0.5 * (x + 1.0), 0.5 * w
+    s_in = h * sj * sj
+    w_in = 2.0 * h * sj * wj
+    s0 = np.concatenate([s_in, s_half])
+    w0 = np.concatenate([w_in, w_half])
+    s = np.concatenate([s0, 1.0 - s0[::-1]])
+    one_minus = np.concatenate([1.0 - s0, s0[::-1]])
+    wt = np.concatenate([w0, w0[::-1]])
+    for a in (s, one_minus, wt):
+        a.setflags(write=False)
+    return s, one_minus, wt
+
+
+_GRADED = _build_graded()
+
+
+def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight) -> tuple[np.ndarray, np.ndarray]:
+    """int_x^1 weight(t) p(t) dt and int_x^1 weight(t) q(t) dt for 0 < x <= 1 (weight(t, 1 - t) smooth on (0, 1), e.g.
+    t^-n, or with a logarithm at t = 1, which it evaluates from the exact 1 - t it is given).
+
+    Element by element in its chart: whole elements above x by one rule each (formed once per call), the
+    element holding x on its part [x, end] with the rule graded toward both ends (``graded_both_ends``: the
+    singular families at an end of the piece, and t^-n near x = 0, are resolved by the grading)."""
+    lay = field.layout
+    x = np.asarray(x, dtype=float)
+    s_rule, _, w_rule = graded_both_ends()
+    starts = field._starts
+    n_el = len(lay)
+    whole_p, whole_q = np.zeros(n_el), np.zeros(n_el)
+    lo = np.array([lay.x_range(e)[0] for e in range(n_el)])
+    hi = np.array([lay.x_range(e)[1] for e in range(n_el)])
+
+    def piece(e: int, s_a: float, s_b: float) -> tuple[float, float]:
+        """int over chart [s_a, s_b] of element e of weight(t) (p, q)(t) |dt|."""
+        s = s_a + (s_b - s_a) * s_rule
+        step = lay.sigma[e] * lay.length[e] * s
+        t = (lay.anchor_value(lay.anchor[e]) + lay.origin[e]) + step  # exact next to 0 (the first element starts at 0)
+        offset = lay.origin[e] + step
+        one_minus_t = -offset if lay.anchor[e] == AT_ONE else lay.gap - offset  # exact next to the edge
+        col = int(starts[e])
+        values = []
+        for fam in element_families(lay, e, field.alpha):
+            values.append(family_values(fam, s))
+        B = np.concatenate(values, axis=1)
+        cols = slice(col, col + B.shape[1])
+        g = weight(t, one_minus_t) * w_rule * (s_b - s_a) * lay.length[e]
+        return float(g @ (B @ field._p[cols])), float(g @ (B @ field._q[cols]))
+
+    for e in range(n_el):
+        if lo[e] > 0.0:
+            whole_p[e], whole_q[e] = piece(e, 0.0, 1.0)
+    out_p, out_q = np.zeros(x.shape), np.zeros(x.shape)
+    for i, xi in enumerate(x.ravel()):
+        above = lo >= xi
+        tp, tq = whole_p[above].sum(), whole_q[above].sum()
+        e = int(np.flatnonzero((lo < xi) & (hi >= xi))[0]) if np.any((lo < xi) & (hi >= xi)) else -1
+        if e >= 0 and xi < hi[e]:
+            # the chart value of x, and which side of it lies above x
+            s_x = float(np.clip((xi - (lay.anchor_value(lay.anchor[e]) + lay.origin[e])) / (lay.sigma[e] * lay.length[e]),
+                                0.0, 1.0))
+            a, b = (s_x, 1.0) if lay.sigma[e] > 0 else (0.0, s_x)
+            pp, qq = piece(e, a, b)
+            tp, tq = tp + pp, tq + qq
+        out_p.flat[i], out_q.flat[i] = tp, tq
+    return out_p, out_q

@@ -1,0 +1,264 @@
+"""The collocation system of the strip punch on the plane singular basis.
+
+Equations (``asymptotics.plane``; x over the half-width a, p even, q odd, H the finite Hilbert transform
+on (-1, 1)):
+
+    (N)  H p + gamma q = 0          at every collocation point    (flat punch: du_z/dx = 0)
+    (T)  H q - gamma p = 0          at the stick points           (stick: du_x/dx = 0)
+    (P)  int_{-1}^{1} p dx = 1                                     (the load)
+
+with q = mu p on the slip zone c < x < 1. Unknowns: the coefficients of p and q on the stick elements
+and of R on the slip elements, where p = R cos(theta), q = R sin(theta)/gamma, theta = pi alpha =
+atan(mu gamma): q = mu p holds by construction and both stay bounded for every mu in [0, inf] (at
+mu = inf, p = 0 on the slip zone: the limit problem of the largest stick width). So the matrix is
+D(theta) = S + cos(theta) N + sin(theta) T, with S the stick columns and N, T the slip columns'
+normal and shear parts, as in ``numeric.core.operators``.
+
+The basis functions live on [0, 1]; p is their even and q their odd reflection, so at x >= 0
+H p(x) = H b(x) - H b(-x) and H q(x) = H b(x) + H b(-x) for a basis function b
+(``numeric.core.plane_cauchy`` gives H b at x and at -x).
+
+What does not depend on alpha (every Legendre family: the plain elements and the regular families of
+the elements at c) is formed once per layout and point set (``PlaneOperators``); the h_beta family at
+c and the edge family s^(alpha - 1/2) are formed per alpha.
+
+The eigenvalue condition is phi(c-) = 0, phi = p - q/mu, the two-dimensional (2.13): without it the
+stick side carries (c - x)^(-1/2 - alpha). In the basis phi = a + h_beta(0) b at c- (a: the regular part,
+b: the singular family's, h_beta(0) = -1/beta), and the functional is beta phi(c-) cos(theta) =
+beta a - b, smooth down to beta = 0 (mu = inf), where it says that the logarithm of p at c- vanishes.
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from numeric.core.plane_cauchy import PLAIN as PLAIN_WEIGHT, Family, family_cauchy, family_integrals, family_values, legendre01, mode_cauchy
+from numeric.core.quadrature import gauss_legendre
+from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
+                                       element_families)
+
+MODE_BETA_MIN = 1e-9
+"""The generic mode carries the exponent beta - 1 with beta = 1/2 - alpha, but at least this. In the scaling
+beta s^(beta - 1) its parts tend to delta functions at c from either side that cancel in q (and p carries
+cos(theta) ~ pi beta), so at beta = 0 (mu = inf exactly) the column degenerates; below mu gamma ~ 1e9 it follows the
+true exponent (with beta held at 1e-3 instead, the functional near c_max at nu = 0.3 was erratic: a mode of the wrong
+exponent). The eigenvalue does not depend on the mode's column (at the root its amplitude is 0), only the smoothness
+of G near the root does; the limit mu -> inf is taken by extrapolation (``numeric.solutions.plane_solver``)."""
+
+__all__ = ["MODE_BETA_MIN", "PlaneOperators", "Transforms", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor"]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Transforms:
+    """Every basis function (columns, layout order, families in order) at the points (rows): H of its even
+    reflection, H of its odd reflection, its value (0 off its element), and int_0^1 of each function; and
+    the same of the generic mode m = beta s^(beta - 1) on the stick end (``mode_stick``: even, odd, values)
+    and on the slip end (``mode_slip``), with its integral over the slip end (``mode_integral``)."""
+
+    even: np.ndarray
+    odd: np.ndarray
+    values: np.ndarray
+    integrals: np.ndarray
+    mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray]
+    mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray]
+    mode_integral: float
+class PlaneOperators:
+    """Transforms of every basis function of a layout at a point set (default: the collocation points).
+
+    ``transforms(alpha)`` fills in the alpha-dependent families; ``columns(e)`` is element e's slice.
+    """
+
+    def __init__(self, lay: PlaneLayout, points: PointSet | None = None) -> None:
+        self.layout = lay
+        self.points = collocation_points(lay) if points is None else points
+        pts = self.points
+        sizes = np.array([lay.n_basis(e) for e in range(len(lay))])
+        self.starts = np.concatenate([[0], np.cumsum(sizes)]).astype(int)
+        n = int(self.starts[-1])
+        N = pts.size
+        E = len(lay)
+        # chart coordinates y of every point and of its mirror -x with respect to every element
+        rel = pts.offset[:, None] - lay.origin[None, :] + np.where(
+            pts.anchor[:, None] == lay.anchor[None, :], 0.0, np.where(lay.anchor[None, :] == AT_C, lay.gap, -lay.gap))
+        scale = (lay.sigma * lay.length)[None, :]
+        self._y = rel / scale
+        a = lay.anchor_value(lay.anchor) + lay.origin
+        self._y_mirror = -(pts.x[:, None] + a[None, :]) / scale
+        self._fixed_even = np.zeros((N, n))
+        self._fixed_odd = np.zeros((N, n))
+        self._fixed_values = np.zeros((N, n))
+        self.integrals_fixed = np.zeros(n)
+        # the Legendre family of every element (plain ones whole, the ends' regular part), all elements at once
+        d = lay.degree
+        has_plain = lay.kind != EDGE
+        E_plain = np.flatnonzero(has_plain)
+        both = np.concatenate([self._y[:, E_plain], self._y_mirror[:, E_plain]], axis=0)
+        I = _legendre_cauchy(both, d)  # (2N, E', d + 1)
+        sig = lay.sigma[E_plain][None, :, None] / math.pi
+        plus, minus = sig * I[:N], sig * I[N:]
+        cols = (self.starts[E_plain][:, None] + np.arange(d + 1)[None, :]).ravel()
+        self._fixed_even[:, cols] = (plus - minus).reshape(N, -1)
+        self._fixed_odd[:, cols] = (plus + minus).reshape(N, -1)
+        fam = element_families(lay, int(E_plain[0]), 0.0)[0]
+        self.integrals_fixed[cols] = (lay.length[E_plain][:, None] * family_integrals(fam)[None, :]).ravel()
+        for e in E_plain:
+            mine = pts.owner == e
+            if np.any(mine):
+                self._fixed_values[np.ix_(mine, np.arange(self.starts[e], self.starts[e] + d + 1))] = \
+                    family_values(fam, pts.s[mine])
+        self._singular = np.flatnonzero(lay.kind != PLAIN)
+
+    def columns(self, e: int) -> slice:
+        return slice(int(self.starts[e]), int(self.starts[e + 1]))
+
+    def transforms(self, alpha: float) -> Transforms:
+        """All transforms with the alpha-dependent families (h_beta at c, the edge weight) at exponent alpha."""
+        lay, pts = self.layout, self.points
+        even, odd = self._fixed_even.copy(), self._fixed_odd.copy()
+        values, integrals = self._fixed_values.copy(), self.integrals_fixed.copy()
+        N = pts.size
+        for e in self._singular:
+            fams = element_families(lay, int(e), alpha)
+            col = int(self.starts[e]) + (0 if lay.kind[e] == EDGE else lay.degree + 1)
+            fam = fams[-1]
+            I = family_cauchy(fam, np.concatenate([self._y[:, e], self._y_mirror[:, e]]))
+            sig = lay.sigma[e] / math.pi
+            plus, minus = sig * I[:N], sig * I[N:]
+            cols = slice(col, col + fam.degree + 1)
+            even[:, cols] = plus - minus
+            odd[:, cols] = plus + minus
+            mine = pts.owner == e
+            if np.any(mine):
+                values[mine, cols] = family_values(fam, pts.s[mine])
+            integrals[cols] = lay.length[e] * family_integrals(fam)
+        beta = max(0.5 - alpha, MODE_BETA_MIN)
+        modes = []
+        for e in (lay.stick_end, lay.stick_end + 1):
+            I = mode_cauchy(beta, np.concatenate([self._y[:, e], self._y_mirror[:, e]]))
+            sig = lay.sigma[e] / math.pi
+            plus, minus = sig * I[:N], sig * I[N:]
+            mine = pts.owner == e
+            value = np.zeros(N)
+            value[mine] = beta * pts.s[mine] ** (beta - 1.0)
+            modes.append((plus - minus, plus + minus, value))
+        return Transforms(even, odd, values, integrals, modes[0], modes[1], float(lay.length[lay.stick_end + 1]))
+
+
+#: Point-element pairs farther than this (in element lengths) from the element take Gauss-Legendre: the pole at
+#: eta = 2 y - 1 >= 4 gives rho >= 7.9, and (degree/2 + 10) nodes integrate P_k/(s - y) to rho^-20 = 9e-19.
+GAUSS_DISTANCE = 1.5
+
+
+def _legendre_cauchy(y: np.ndarray, degree: int) -> np.ndarray:
+    """int_0^1 P_k(2s - 1) ds/(s - y), k <= degree, for an array of y: -2 Q_k(2y - 1) (``plane_cauchy.legendre_q01``)
+    where y is within GAUSS_DISTANCE of [0, 1], one Gauss-Legendre rule (a batched product) beyond."""
+    s, w = gauss_legendre(degree // 2 + 10)
+    s, w = 0.5 * (s + 1.0), 0.5 * w
+    out = np.empty(y.shape + (degree + 1,))
+    near = (y > -GAUSS_DISTANCE) & (y < 1.0 + GAUSS_DISTANCE)
+    out[~near] = (w / (s - y[~near][:, None])) @ legendre01(degree, s)
+    if np.any(near):
+        out[near] = family_cauchy(Family(PLAIN_WEIGHT, 0.0, degree), y[near])
+    return out
+
+
+def normal_factor(theta: float) -> float:
+    """cos(theta), exactly 0 at theta = pi/2 (mu = inf: no pressure on the slip zone)."""
+    return 0.0 if theta >= 0.5 * math.pi else math.cos(theta)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class PlaneCollocationSystem:
+    """D(theta) = [stick | cos(theta) normal + sin(theta) shear] (+ the mode's stick part in the last column).
+
+    Unknowns z = [p on the stick elements, q on the stick elements, R on the slip elements, a], a the amplitude
+    of the generic mode, which is the eigen functional: G(theta) = a."""
+
+    layout: PlaneLayout
+    gamma: float
+    alpha: float            # the exponent the basis carries
+    stick: np.ndarray       # (n, 2 ns): columns of p and q on the stick elements
+    normal: np.ndarray      # (n, nl + 1): slip columns (and the mode's slip part) multiplying cos(theta)
+    shear: np.ndarray       # (n, nl + 1): ... multiplying sin(theta)
+    mode_stick: np.ndarray  # (n,): the mode's stick part (q = m on the stick end)
+    rhs: np.ndarray
+    stick_columns: np.ndarray  # basis columns (of ``PlaneOperators``) of the stick zone, then of the slip zone
+    slip_columns: np.ndarray
+    integrals: np.ndarray   # int_0^1 of every basis function (layout order)
+
+    @property
+    def n_stick(self) -> int:
+        return self.stick_columns.size
+
+    def matrix(self, theta: float) -> np.ndarray:
+        out = np.concatenate([self.stick, normal_factor(theta) * self.normal + math.sin(theta) * self.shear], axis=1)
+        out[:, -1] += self.mode_stick
+        return out
+
+    def matrix_derivative(self, theta: float) -> np.ndarray:
+        """d D / d theta (zero on the stick columns)."""
+        n, ns = self.rhs.size, self.n_stick
+        out = np.zeros((n, n))
+        out[:, 2 * ns:] = -math.sin(theta) * self.normal + normal_factor(theta) * self.shear
+        return out
+
+    def functional(self, theta: float) -> np.ndarray:
+        """l with l . z = a, the generic mode's amplitude (0 at the eigenvalue)."""
+        out = np.zeros(self.rhs.size)
+        out[-1] = 1.0
+        return out
+
+    def functional_derivative(self, theta: float) -> np.ndarray:
+        return np.zeros(self.rhs.size)
+
+
+def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) -> PlaneCollocationSystem:
+    """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
+
+    The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
+    stick side and p = -gamma cos(pi alpha) q on the slip side) enters as q = m on the stick end and
+    R = -gamma m on the slip end (p = R cos(theta)), m = beta s^(beta - 1) (unit integral; the delta function
+    at c for mu = inf)."""
+    lay, pts = ops.layout, ops.points
+    T = ops.transforms(alpha)
+    stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
+    sc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in stick_el])
+    lc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in slip_el])
+    ns, nl = sc.size, lc.size
+    stick_pts = np.flatnonzero(np.isin(pts.owner, stick_el))
+    N = pts.size
+    n = N + stick_pts.size + 1
+    if n != 2 * ns + nl + 1:
+        raise ValueError(f"plane system is {n} x {2 * ns + nl + 1}, not square")
+    stick = np.zeros((n, 2 * ns))
+    stick[:N, :ns] = T.even[:, sc]                          # (N): H p (stick part)
+    stick[:N, ns:] = gamma * T.values[:, sc]                #      + gamma q at the stick points
+    stick[N:-1, ns:] = T.odd[np.ix_(stick_pts, sc)]         # (T): H q (stick part)
+    stick[N:-1, :ns] = -gamma * T.values[np.ix_(stick_pts, sc)]  # - gamma p
+    stick[-1, :ns] = 2.0 * T.integrals[sc]                  # (P): int_{-1}^{1} p
+    normal = np.zeros((n, nl + 1))
+    normal[:N, :nl] = T.even[:, lc]                         # (N): H p (slip part), p = R cos(theta)
+    normal[-1, :nl] = 2.0 * T.integrals[lc]
+    shear = np.zeros((n, nl + 1))
+    shear[:N, :nl] = T.values[:, lc]                        # (N): gamma q = R sin(theta) at the slip points
+    shear[N:-1, :nl] = T.odd[np.ix_(stick_pts, lc)] / gamma  # (T): H q (slip part), q = R sin(theta)/gamma
+    even_l, odd_l, value_l = T.mode_slip                    # the mode on the slip end: R = -gamma m
+    normal[:N, -1] = -gamma * even_l
+    normal[-1, -1] = -2.0 * gamma * T.mode_integral
+    shear[:N, -1] = -gamma * value_l
+    shear[N:-1, -1] = -odd_l[stick_pts]
+    even_s, odd_s, value_s = T.mode_stick                   # on the stick end: q = m
+    mode_stick = np.zeros(n)
+    mode_stick[:N] = gamma * value_s
+    mode_stick[N:-1] = odd_s[stick_pts]
+    rhs = np.zeros(n)
+    rhs[-1] = 1.0
+    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals)

@@ -1,0 +1,173 @@
+"""Power-law profiles in plane strain with friction: the cylinder (n = 2) and |X|^n, from the strip punch.
+
+A profile z = |X|^n / (n b^(n-1)) (the cylinder of radius R: n = 2, b = R) pressed monotonically: every
+load increment is a strip punch of the current half-width, so the stick half-width c is that of the strip
+punch for every n (the problem is linear in the load at fixed width; [S75] §3's self-similarity in the
+plane), and with unit total load
+
+    p(x) = n x^(n-1) int_x^1 t^-n p0(t) dt,      q(x) = n x^(n-1) int_x^1 t^-n q0(t) dt        ([S75] (3.13))
+
+(a superposition of unit strip punches of half-width b with weight n b^(n-1) db). The load-width relation
+follows from the slope of the surface outside each strip punch, s0(y) = H p0(y) for |y| > 1:
+
+    (H p + gamma q)(x) = -K sgn(x) |x|^(n-1),   K = (n/pi) int_0^1 p0(t) W_n(t) dt,
+    W_n(t) = int_1^inf 2 y^(1-n) dy / (y^2 - t^2) = int_0^1 2 v^(n-1) dv / (1 - t^2 v^2)   (-log(1 - t^2)/t^2 at n = 2),
+
+and the indenter's slope -sgn(X) |X|^(n-1)/b^(n-1) gives P = G a^n / ((1 - nu) K b^(n-1)); frictionless,
+K0 = 2/pi at n = 2 (Hertz: P = pi a^2 E* / (4 R), E* = 2 G/(1 - nu)). The indentation depth of a half-plane
+is not defined (the displacement grows like log of the distance), so P(a) is the relation reported.
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+[S75] D. A. Spence, "The Hertz contact problem with finite friction",
+      J. Elasticity 5 (1975) 297-319.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from asymptotics.arrays import scalar_or_array
+from asymptotics.materials import check_n
+
+from numeric.core.plane_fields import PlaneField, graded_both_ends, weighted_tail_integrals
+from numeric.solutions.plane_punch import StripPunchSolution, points, strip_punch
+from numeric.solutions.plane_solver import DEFAULT_LEVEL
+
+__all__ = ["PlanePowerLawSolution", "plane_power_law", "load_weight", "load_factor_frictionless"]
+
+
+def load_weight(n: float, t: np.ndarray, u: np.ndarray | None = None) -> np.ndarray:
+    """W_n(t) = int_1^inf 2 y^(1-n) dy / (y^2 - t^2) = int_0^1 2 v^(n-1) dv / (1 - t^2 v^2) for 0 <= t < 1.
+
+    W_2 = -log(1 - t^2)/t^2 (1 at t = 0), with 1 - t^2 = u^2 (2 - u^2) from u = sqrt(1 - t) where given (next to
+    the edge t would round it); other n: W_2 + int_0^1 2 (v^(n-1) - v) dv/(1 - t^2 v^2), whose integrand is
+    bounded at v = t = 1 (the rule graded toward both ends resolves v^(n-1) at 0)."""
+    t = np.asarray(t, dtype=float)
+    t2 = t * t
+    one_minus_t2 = (1.0 - t) * (1.0 + t) if u is None else u * u * (2.0 - u * u)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w2 = np.where(t2 > 1e-8, -np.log(one_minus_t2) / np.where(t2 > 1e-8, t2, 1.0), 1.0 + 0.5 * t2)
+    if n == 2.0:
+        return w2
+    v, one_minus_v, wv = graded_both_ends()
+    # 1 - t^2 v^2 = (1 - t^2) + t^2 (1 - v)(1 + v), without cancellation at t, v -> 1
+    denominator = one_minus_t2[..., None] + t2[..., None] * (one_minus_v * (1.0 + v))[None, :]
+    remainder = (2.0 * wv * (v ** (n - 1.0) - v)) / denominator
+    return w2 + remainder.sum(axis=-1)
+
+
+def _edge_rule(x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Nodes t, u = sqrt(1 - t) and weights g (rows: one rule per x) for int_x^1 f(t) dt with f ~ (1 - t)^(-1/2):
+    t = 1 - u^2 = (1 - u)(1 + u), u in [0, sqrt(1 - x)], dt = 2 u du, by the rule graded toward both ends
+    (``numeric.core.plane_fields.graded_both_ends``: the oscillation (1 - t)^(i eps) of the full-stick punch at
+    u = 0, t^-n near x = 0 at the other end)."""
+    s, one_minus_s, w = graded_both_ends()
+    top = np.sqrt(1.0 - x)
+    u = top[:, None] * s[None, :]
+    one_minus_u = (x / (1.0 + top))[:, None] + top[:, None] * one_minus_s[None, :]  # 1 - top = x / (1 + top)
+    return one_minus_u * (1.0 + u), u, 2.0 * u * w[None, :] * top[:, None]
+
+
+def load_factor_frictionless(n: float) -> float:
+    """K0 = (n/pi) int_0^1 p_S(t) W_n(t) dt for Sadowsky's p_S = 1/(pi sqrt(1 - t^2)) (2/pi at n = 2)."""
+    t, u, g = _edge_rule(np.zeros(1))
+    return float((n / math.pi) * np.sum(g / (math.pi * u * np.sqrt(2.0 - u * u)) * load_weight(n, t, u)))
+
+
+@dataclass(frozen=True, slots=True)
+class PlanePowerLawSolution:
+    """A profile |X|^n / (n b^(n-1)) (n = 2: the cylinder, b = R) with friction, from the strip punch ``flat``.
+
+    ``pressure``, ``shear``: (3.13) in the plane, unit load; ``load_factor`` K with P = G a^n / ((1 - nu) K b^(n-1));
+    ``load_ratio`` = K0/K, the load over the frictionless one at the same half-width a.
+    """
+
+    n: float
+    flat: StripPunchSolution
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def c(self) -> float:
+        return self.flat.c
+
+    @property
+    def mu(self) -> float:
+        return self.flat.mu
+
+    @property
+    def gamma(self) -> float:
+        return self.flat.gamma
+
+    def _tails(self, ax: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        f = self.flat.field
+        n = self.n
+        if isinstance(f, PlaneField):
+            return weighted_tail_integrals(f, ax, lambda t, one_minus_t: t ** (-n))
+        t, u, g = _edge_rule(ax)  # closed-form flat punch: t = 1 - u^2 on [x, 1]
+        p, q = f.edge_pressure_shear(u)
+        g = g * t ** (-n)
+        return (g * p).sum(axis=1), (g * q).sum(axis=1)
+
+    def _fields(self, x: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+        x_arr = points(x)
+        ax = np.abs(x_arr).ravel()
+        n = self.n
+        p, q = np.zeros(ax.shape), np.zeros(ax.shape)
+        inside = (ax > 0.0) & (ax < 1.0)
+        if np.any(inside):
+            tp, tq = self._tails(ax[inside])
+            scale = n * ax[inside] ** (n - 1.0)
+            p[inside], q[inside] = scale * tp, scale * tq
+        centre = ax == 0.0
+        if np.any(centre):  # x -> 0: n x^(n-1) int_x^1 t^-n p0 -> n p0(0)/(n - 1) (n > 1), [S75] (3.18)
+            p0 = float(np.asarray(self.flat.pressure(0.0)))
+            p[centre] = n / (n - 1.0) * p0 if n > 1.0 else math.inf
+        return p.reshape(x_arr.shape), (np.sign(x_arr).ravel() * q).reshape(x_arr.shape)
+
+    def pressure(self, x: ArrayLike) -> np.ndarray | float:
+        """p(x) = n x^(n-1) int_x^1 t^-n p0(t) dt, int p = 1 (0 at the edges for n > 0)."""
+        return scalar_or_array(self._fields(x)[0])
+
+    def shear(self, x: ArrayLike) -> np.ndarray | float:
+        """q(x) = n x^(n-1) int_x^1 t^-n q0(t) dt (odd, + outward on the half-plane)."""
+        return scalar_or_array(self._fields(x)[1])
+
+    @property
+    def load_factor(self) -> float:
+        """K = (n/pi) int_0^1 p0 W_n: P = G a^n / ((1 - nu) K b^(n-1)) (2/pi frictionless at n = 2)."""
+        if "K" not in self._cache:
+            self._cache["K"] = self._load_factor()
+        return self._cache["K"]
+
+    def _load_factor(self) -> float:
+        f = self.flat.field
+        if isinstance(f, PlaneField):
+            tail, _ = weighted_tail_integrals(f, np.array([1e-300]),
+                                              lambda t, one_minus_t: load_weight(self.n, t, np.sqrt(one_minus_t)))
+            return float(self.n / math.pi * tail[0])
+        t, u, g = _edge_rule(np.zeros(1))
+        p, _ = f.edge_pressure_shear(u)
+        return float(self.n / math.pi * np.sum(g * p * load_weight(self.n, t, u)))
+
+    @property
+    def load_ratio(self) -> float:
+        """P with friction over P frictionless at the same half-width (K0/K)."""
+        return load_factor_frictionless(self.n) / self.load_factor
+
+
+def plane_power_law(n: float, *, nu: float | None = None, gamma: float | None = None, mu: float | None = None,
+                    c: float | None = None, level: int = DEFAULT_LEVEL) -> PlanePowerLawSolution:
+    """Profile |X|^n (n = 2: the cylinder) with friction: the same c as the strip punch (exactly one of mu, c).
+
+    >>> h = plane_power_law(2, nu=0.3, mu=0.0)
+    >>> round(float(h.pressure(0.6)), 12) == round(1.6 / math.pi, 12)   # Hertz: (2/pi) sqrt(1 - x^2)
+    True
+    """
+    return PlanePowerLawSolution(check_n(n), strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=level))

@@ -1,0 +1,232 @@
+"""The rigid strip punch in plane strain with friction: the solution type, its routes and the public functions.
+
+``strip_punch`` (exactly one of mu and c), ``plane_stick_width`` and ``plane_friction_coefficient``
+(vectorised), ``plane_slip_limit`` and ``plane_largest_stick_width`` (mu -> inf): the singular-basis solver
+(``numeric.solutions.plane_solver``) or the closed forms of ``asymptotics.plane`` in the limits mu = 0
+(Sadowsky) and mu = inf with full stick, c = 1 (Abramov; as ``numeric.flat_punch(mu=inf)`` gives App. B's
+adhesive punch). The limit mu -> inf of the frictional punch is not the bonded one: its stick width
+saturates at c_max < 1 (``plane_largest_stick_width``).
+
+Dimensionless fields (``asymptotics.plane``): x = X/a, p = sigma_zz a/P, q = sigma_xz a/P (the traction on
+the half-plane, + outward for x > 0), int_{-1}^{1} p = 1; the slip u(x) = u_x G / ((1 - nu) P), negative
+(inward) for c < x < 1 and 0 on the stick zone. (Plane stress: nu -> nu/(1 + nu), ``gamma_plane_stress``.)
+
+References
+----------
+[S73] D. A. Spence, "An eigenvalue problem for elastic contact with finite friction",
+      Proc. Camb. Phil. Soc. 73 (1973) 249-268.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from asymptotics.arrays import scalar_or_array
+from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
+from asymptotics.plane import bonded_traction, pressure_sadowsky
+
+from numeric.core.errors import NoEigenvalueError
+from numeric.core.plane_fields import PlaneField
+from numeric.solutions.plane_solver import DEFAULT_LEVEL, PLANE_LEVELS, solve_given_c, solve_given_mu, solve_limit
+
+__all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
+           "plane_largest_stick_width", "points"]
+
+
+def points(x: ArrayLike) -> np.ndarray:
+    """x over the half-width: -1 <= x <= 1 (TypeError for non-numbers, ValueError naming x otherwise)."""
+    raw = np.asarray(x) if x is not None else None
+    if raw is None or raw.dtype.kind not in "biuf":
+        raise TypeError(f"x must be a real number or an array of real numbers, got {x!r}")
+    arr = raw.astype(float)
+    if not np.all(np.isfinite(arr)) or np.any(np.abs(arr) > 1.0):
+        raise ValueError(f"x (distance from the centre over the half-width a) must lie in [-1, 1], got {x!r}")
+    return arr
+
+
+class _Sadowsky:
+    """mu = 0: p = 1/(pi sqrt(1 - x^2)), q = 0, u = -(gamma/pi) asin(x) (du/dx = -gamma p, u(0) = 0)."""
+
+    def __init__(self, gamma: float) -> None:
+        self.gamma = gamma
+
+    def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        return np.asarray(pressure_sadowsky(x), dtype=float), np.zeros(x.shape)
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        return -(self.gamma / math.pi) * np.arcsin(x)
+
+    def edge_pressure_shear(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p, q at x = 1 - u^2, formed from u (1 - x would round next to the edge)."""
+        return 1.0 / (math.pi * u * np.sqrt(2.0 - u * u)), np.zeros(u.shape)
+
+
+class _Abramov:
+    """Full stick (c = 1): p + i q = (cosh(pi eps)/pi) (1 - x)^(-1/2 - i eps) (1 + x)^(-1/2 + i eps), u = 0."""
+
+    def __init__(self, gamma: float) -> None:
+        self.gamma = gamma
+
+    def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        w = np.asarray(bonded_traction(x, self.gamma))
+        return w.real, w.imag
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        return np.zeros(x.shape)
+
+    def edge_pressure_shear(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p, q at x = 1 - u^2, formed from u: 1 - x = u^2, 1 + x = 2 - u^2."""
+        eps = math.atanh(self.gamma) / math.pi
+        w = (math.cosh(math.pi * eps) / math.pi) / (u * np.sqrt(2.0 - u * u)) * np.exp(
+            1j * eps * (np.log(2.0 - u * u) - 2.0 * np.log(u)))
+        return w.real, w.imag
+
+
+@dataclass(frozen=True, slots=True)
+class StripPunchSolution:
+    """A rigid flat strip punch of half-width a pressed into an elastic half-plane with Coulomb friction.
+
+    Attributes
+    ----------
+    nu : float or None
+        Poisson's ratio (None when gamma was given).
+    gamma : float
+        Coupling constant (1 - 2 nu)/(2 - 2 nu).
+    mu : float
+        Friction coefficient (inf: full stick, or the limit mu -> inf).
+    c, gap : float
+        Stick half-width over a, and 1 - c (without the cancellation of forming it from c).
+    error : float
+        Estimated absolute error of mu (given c) or c (given mu; of 1 - c_max in the limit mu -> inf):
+        the difference from the resolution one degree lower, at least the rounding floor; 0 for closed forms.
+    route : str
+        "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns" or "limit mu -> inf ...".
+    residual : float
+        The eigen residual (the generic mode's amplitude; 0 for closed forms).
+
+    Methods pressure(x), shear(x), slip(x) give p, q and u at -1 <= x <= 1 (vectorised): p even, q odd,
+    q = mu p on the slip zones; at x = +-1 the flat-punch stresses are infinite ((1 - x)^(alpha - 1/2)).
+    """
+
+    nu: float | None
+    gamma: float
+    mu: float
+    c: float
+    gap: float
+    error: float
+    route: str
+    residual: float = 0.0
+    _field: object = field(default=None, repr=False, compare=False)
+
+    def pressure(self, x: ArrayLike) -> np.ndarray | float:
+        """p(x) = sigma_zz a / P (even)."""
+        return scalar_or_array(self._field.pressure_shear(points(x))[0])
+
+    def shear(self, x: ArrayLike) -> np.ndarray | float:
+        """q(x) = sigma_xz a / P on the half-plane, + outward (odd)."""
+        return scalar_or_array(self._field.pressure_shear(points(x))[1])
+
+    def slip(self, x: ArrayLike) -> np.ndarray | float:
+        """u(x) = u_x G / ((1 - nu) P): 0 on |x| <= c, inward (sign opposite to x) on the slip zones."""
+        return scalar_or_array(self._field.slip(points(x)))
+
+    @property
+    def field(self) -> object:
+        """The stress field (``PlaneField`` for the solver, a closed form otherwise)."""
+        return self._field
+
+
+def _level(level: int) -> int:
+    if not isinstance(level, int) or isinstance(level, bool) or not 0 <= level < len(PLANE_LEVELS):
+        raise ValueError(f"level must be an integer from 0 to {len(PLANE_LEVELS) - 1}, got {level!r}")
+    return level
+
+
+def _from_field(nu: float | None, fine: PlaneField, error: float, level: int, mu: float | None = None,
+                route: str | None = None) -> StripPunchSolution:
+    route = route or f"solver level {level}, {fine.n_unknowns} unknowns"
+    return StripPunchSolution(nu, fine.gamma, fine.mu if mu is None else mu, fine.c, fine.gap, error, route,
+                              fine.residual, fine)
+
+
+def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: float | None = None,
+                c: float | None = None, level: int = DEFAULT_LEVEL) -> StripPunchSolution:
+    """The flat strip punch with friction: give exactly one of ``mu`` and ``c``, and ``nu`` or ``gamma``.
+
+    mu = 0 is Sadowsky's frictionless punch, mu = inf or c = 1 Abramov's fully stuck one (closed forms);
+    otherwise the singular-basis solver at ``level`` (0-4), with the level one degree lower as error estimate.
+    c above the largest stick width c_max(gamma) raises ``NoEigenvalueError``.
+
+    Examples
+    --------
+    >>> s = strip_punch(nu=0.3, c=0.5)
+    >>> round(s.mu, 10), s.error < 1e-10
+    (0.2374025972, True)
+    """
+    g = resolve_gamma(None if nu is None else float(check_nu(nu)), gamma)
+    level = _level(level)
+    if (mu is None) == (c is None):
+        raise ValueError("give exactly one of mu (friction coefficient) or c (stick half-width / a)")
+    nu = None if nu is None else float(nu)
+    if c is not None:
+        c = float(check_c(c))
+        if c == 1.0:
+            return StripPunchSolution(nu, g, math.inf, 1.0, 0.0, 0.0, "full stick (Abramov)", 0.0, _Abramov(g))
+        if g == 0.0:
+            raise NoEigenvalueError("gamma = 0: shear and pressure decouple and every mu > 0 gives c = 1")
+        solve = solve_given_c(c, 1.0 - c, g, level)
+        return _from_field(nu, solve.field, solve.error, level)
+    mu = float(check_mu(mu))
+    if mu == 0.0:
+        return StripPunchSolution(nu, g, 0.0, 0.0, 1.0, 0.0, "frictionless (Sadowsky)", 0.0, _Sadowsky(g))
+    if mu == math.inf or g == 0.0:
+        return StripPunchSolution(nu, g, mu, 1.0, 0.0, 0.0, "full stick (Abramov)", 0.0, _Abramov(g))
+    solve = solve_given_mu(mu, g, level)
+    return _from_field(nu, solve.field, solve.error, level, mu)
+
+
+def plane_slip_limit(nu: float | None = None, *, gamma: float | None = None, level: int = DEFAULT_LEVEL
+                     ) -> StripPunchSolution:
+    """The frictional strip punch in the limit mu -> inf: c = c_max < 1, no pressure on the slip zones (q = R/gamma
+    there); not the fully stuck punch (``strip_punch(mu=inf)``). ``error`` is that of 1 - c_max."""
+    g = resolve_gamma(None if nu is None else float(check_nu(nu)), gamma)
+    if g == 0.0:
+        raise ValueError("gamma = 0 (nu = 1/2): no coupling, every mu > 0 sticks fully (c = 1)")
+    solve = solve_limit(g, _level(level))
+    f = solve.field
+    return StripPunchSolution(None if nu is None else float(nu), g, math.inf, 1.0 - solve.gap_limit, solve.gap_limit,
+                              solve.error, f"limit mu -> inf (slip zones without pressure; c extrapolated from mu gamma "
+                              f"= 1e5, 1e6, the stresses at 1e6), solver level {level}, {f.n_unknowns} unknowns",
+                              f.residual, f)
+
+
+def plane_largest_stick_width(nu: float | None = None, *, gamma: float | None = None,
+                              level: int = DEFAULT_LEVEL) -> float:
+    """c_max(nu): the stick half-width as mu -> inf, from the limit problem (no closed form is known)."""
+    return plane_slip_limit(nu, gamma=gamma, level=level).c
+
+
+def plane_stick_width(mu: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
+                      level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+    """c(mu, nu) of the strip punch (and of every power law |x|^n), elementwise over broadcast arrays."""
+    mu_arr = np.asarray(check_mu(mu), dtype=float)
+    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
+    m, o = np.broadcast_arrays(mu_arr, other)
+    out = np.array([strip_punch(nu=None if gamma is not None else float(b), gamma=None if gamma is None else float(b),
+                                mu=float(a), level=level).c for a, b in zip(m.ravel(), o.ravel())])
+    return scalar_or_array(out.reshape(m.shape))
+
+
+def plane_friction_coefficient(c: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
+                               level: int = DEFAULT_LEVEL) -> np.ndarray | float:
+    """mu(c, nu) of the strip punch, elementwise over broadcast arrays (NoEigenvalueError above c_max)."""
+    c_arr = np.asarray(check_c(c), dtype=float)
+    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
+    cc, o = np.broadcast_arrays(c_arr, other)
+    out = np.array([strip_punch(nu=None if gamma is not None else float(b), gamma=None if gamma is None else float(b),
+                                c=float(a), level=level).mu for a, b in zip(cc.ravel(), o.ravel())])
+    return scalar_or_array(out.reshape(cc.shape))

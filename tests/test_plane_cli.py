@@ -1,0 +1,59 @@
+"""The plane-strain calculator and command line: ``numeric.app.plane_contact``, ``hertz-friction cylinder|strip``."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from numeric import plane
+from numeric.app import cli
+from numeric.app.contact import elastic
+from numeric.app.plane_contact import press_cylinder, press_strip
+
+GLASS = elastic(E=70e9, nu=0.22)
+
+
+def test_frictionless_cylinder_is_hertz():
+    # a = sqrt(4 R P/(pi E*)), p_max = 2 P/(pi a) (plane-strain Hertz), to rounding (K0 = 2/pi to 5e-14)
+    c = press_cylinder(0.005, GLASS, mu=0.0, load=1e5)
+    e_star = 2.0 * GLASS.G / (1.0 - GLASS.nu)
+    a = math.sqrt(4 * 0.005 * 1e5 / (math.pi * e_star))
+    assert c.half_width == pytest.approx(a, rel=1e-13) and c.frictionless_half_width == pytest.approx(a, rel=1e-15)
+    assert c.max_pressure == pytest.approx(2e5 / (math.pi * a), rel=1e-13) and c.max_shear == 0.0
+
+
+def test_cylinder_with_friction_scales_the_dimensionless_solution():
+    c = press_cylinder(0.005, GLASS, mu=0.3, load=1e5)
+    h = plane.power_law(2, nu=0.22, mu=0.3)
+    assert c.c == h.c and c.stick_half_width == pytest.approx(h.c * c.half_width, rel=1e-15)
+    # P = M a^2/(K R): the load-width relation with the strip punch's load factor (numeric.solutions.plane_power_law)
+    M = GLASS.G / (1.0 - GLASS.nu)
+    assert M * c.half_width**2 / (h.load_factor * 0.005) == pytest.approx(1e5, rel=1e-13)
+    assert c.centre_pressure == pytest.approx(1e5 / c.half_width * float(h.pressure(0.0)), rel=1e-13)
+    assert c.half_width < c.frictionless_half_width  # friction stiffens the contact: smaller a at the same load
+
+
+def test_strip_slip_and_sadowsky():
+    s = press_strip(0.001, GLASS, mu=0.0, load=1e5)
+    M = GLASS.G / (1.0 - GLASS.nu)
+    g = (1 - 2 * 0.22) / (2 - 2 * 0.22)
+    assert s.centre_pressure == pytest.approx(1e5 / (math.pi * 0.001), rel=1e-15)
+    assert s.slip_edge == pytest.approx(-(g / 2) * 1e5 / M, rel=1e-14)  # u = -(gamma/pi) asin(x) at x = 1
+    f = press_strip(0.001, GLASS, mu=0.3, load=1e5)
+    assert -(g / 2) * 1e5 / M < f.slip_edge < 0.0  # friction reduces the inward slip
+    assert math.isinf(f.max_pressure)
+
+
+def test_command_line(capsys):
+    assert cli.main(["cylinder", "--radius", "0.005", "--load-per-length", "1e5", "--E", "70e9", "--nu", "0.22",
+                     "--mu", "0.3", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["c"] == pytest.approx(plane.power_law(2, nu=0.22, mu=0.3).c, rel=1e-12)
+    assert cli.main(["strip", "--half-width", "0.001", "--load-per-length", "1e5", "--G", "3e10", "--nu", "0.3",
+                     "--mu", "0.5", "--indenter-E", "2e11", "--indenter-nu", "0.3"]) == 0
+    assert "strip punch, half-width 1 mm" in capsys.readouterr().out
+    assert cli.main(["cylinder", "--radius", "0.005", "--load-per-length", "-1", "--E", "70e9", "--nu", "0.22",
+                     "--mu", "0.3"]) == 2
+    assert "load" in capsys.readouterr().err

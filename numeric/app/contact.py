@@ -137,6 +137,7 @@ from numeric.solutions.solver import DEFAULT_LEVEL
 __all__ = [
     "Elastic",
     "elastic",
+    "positive",
     "MaterialPair",
     "KalkerParameters",
     "FlatPunch",
@@ -161,7 +162,7 @@ _GRID = np.linspace(0.0, 1.0, 257)  # search grid in x = r/a for the maxima, the
 _ZOOMS = 4
 
 
-def _positive(value: float, name: str, what: str) -> float:
+def positive(value: float, name: str, what: str) -> float:
     """``value`` as a float, raising ValueError naming it unless finite and > 0 (TypeError unless a number)."""
     v = real_number(value, name)
     if not (math.isfinite(v) and v > 0.0):
@@ -185,7 +186,7 @@ class Elastic:
     nu: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "G", _positive(self.G, "G", "shear modulus, Pa"))
+        object.__setattr__(self, "G", positive(self.G, "G", "shear modulus, Pa"))
         object.__setattr__(self, "nu", float(check_nu(real_number(self.nu, "nu"))))
 
     @property
@@ -211,8 +212,8 @@ def elastic(*, nu: float, E: float | None = None, G: float | None = None, prefix
     except (ValueError, TypeError) as err:
         raise type(err)(f"{prefix}{err}") from None
     if G is None:
-        G = _positive(E, f"{prefix}E", "Young's modulus, Pa") / (2.0 * (1.0 + nu_value))
-    return Elastic(_positive(G, f"{prefix}G", "shear modulus, Pa"), nu_value)
+        G = positive(E, f"{prefix}E", "Young's modulus, Pa") / (2.0 * (1.0 + nu_value))
+    return Elastic(positive(G, f"{prefix}G", "shear modulus, Pa"), nu_value)
 
 
 @dataclass(frozen=True, slots=True)
@@ -297,7 +298,7 @@ class FlatPunch:
     radius: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "radius", _positive(self.radius, "radius", "punch radius, m"))
+        object.__setattr__(self, "radius", positive(self.radius, "radius", "punch radius, m"))
 
     @property
     def description(self) -> str:
@@ -318,14 +319,14 @@ class PowerLaw:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "n", check_n(self.n))
-        object.__setattr__(self, "k", _positive(self.k, "k", "profile coefficient of z = k r^n, m^(1-n)"))
+        object.__setattr__(self, "k", positive(self.k, "k", "profile coefficient of z = k r^n, m^(1-n)"))
         if not self.description:
             object.__setattr__(self, "description", f"power law z = {self.k:.6g} r^{self.n:g}")
 
     @classmethod
     def sphere(cls, radius: float) -> PowerLaw:
         """A sphere of radius R (m) in the Hertz approximation z = r^2/(2R): n = 2, b = R."""
-        R = _positive(radius, "radius", "sphere radius, m")
+        R = positive(radius, "radius", "sphere radius, m")
         return cls(2.0, 0.5 / R, f"sphere, radius {R:.6g} m")
 
     @classmethod
@@ -349,7 +350,7 @@ class PowerLaw:
     def from_length(cls, n: float, b: float) -> PowerLaw:
         """Spence's z = r^n/(n b^(n-1)) ([S75] §3.1), b a body length in m: k = 1/(n b^(n-1))."""
         n_value = check_n(n)
-        b_value = _positive(b, "b", "body length of z = r^n/(n b^(n-1)), m")
+        b_value = positive(b, "b", "body length of z = r^n/(n b^(n-1)), m")
         return cls(n_value, 1.0 / (n_value * b_value ** (n_value - 1.0)),
                    f"power law z = r^{n_value:g}/({n_value:g} b^{n_value - 1.0:g}), b = {b_value:.6g} m")
 
@@ -802,8 +803,8 @@ def _checked(shape, half_space, indenter, mu, load, approach) -> tuple[float, st
         raise ValueError("give exactly one of load (N) or approach (m)")
     mu_value = float(check_mu(real_number(mu, "mu")))
     if load is not None:
-        return mu_value, "load", _positive(load, "load", "normal force, N")
-    return mu_value, "approach", _positive(approach, "approach", "approach of the bodies, m")
+        return mu_value, "load", positive(load, "load", "normal force, N")
+    return mu_value, "approach", positive(approach, "approach", "approach of the bodies, m")
 
 
 def _dimensionless(shape: FlatPunch | PowerLaw, mu: float, gamma: float,

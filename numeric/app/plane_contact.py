@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from numeric.app.contact import Elastic, MaterialPair
+from numeric.app.contact import Elastic, MaterialPair, positive
 from numeric.solutions.plane_power_law import plane_power_law
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
@@ -77,16 +77,6 @@ class LineContact:
         return out
 
 
-def _checked_positive(value: float, name: str, what: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} ({what}) must be a number, got {value!r}") from None
-    if not (math.isfinite(v) and v > 0.0):
-        raise ValueError(f"{name} ({what}) must be finite and > 0, got {value!r}")
-    return v
-
-
 def _pair(half_space: Elastic, indenter: Elastic | None) -> tuple[MaterialPair, float, float]:
     pair = MaterialPair(half_space, indenter)
     g = pair.gamma
@@ -106,8 +96,8 @@ def _maximum(f, c: float) -> tuple[float, float]:
 def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
                    level: int = DEFAULT_LEVEL) -> LineContact:
     """A cylinder of radius R (m) pressed with load per unit length P (N/m): the plane-strain Hertz contact with friction."""
-    R = _checked_positive(radius, "radius", "cylinder radius, m")
-    P = _checked_positive(load, "load", "load per unit length, N/m")
+    R = positive(radius, "radius", "cylinder radius, m")
+    P = positive(load, "load", "load per unit length, N/m")
     pair, g, sign = _pair(half_space, indenter)
     h = plane_power_law(2, gamma=g, mu=mu, level=level)
     M = pair.modulus
@@ -126,8 +116,8 @@ def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float
 def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
                 level: int = DEFAULT_LEVEL) -> LineContact:
     """A rigid flat strip punch of half-width a (m) pressed with load per unit length P (N/m), with friction."""
-    a = _checked_positive(half_width, "half_width", "strip half-width, m")
-    P = _checked_positive(load, "load", "load per unit length, N/m")
+    a = positive(half_width, "half_width", "strip half-width, m")
+    P = positive(load, "load", "load per unit length, N/m")
     pair, g, sign = _pair(half_space, indenter)
     s = strip_punch(gamma=g, mu=mu, level=level)
     scale = P / a

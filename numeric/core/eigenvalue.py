@@ -27,8 +27,10 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Protocol, TypeVar
 
 import numpy as np
 from scipy import optimize
@@ -38,7 +40,8 @@ from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
-__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "solve_given_c", "solve_given_theta", "solve_given_theta_guided"]
+__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
+           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE"]
 
 HALF_PI = 0.5 * math.pi
 ALPHA_TOLERANCE = 1e-9
@@ -65,7 +68,23 @@ def operators_at(c: float, gap: float, res: Resolution) -> AbelOperators:
     return AbelOperators(layout(c, gap, res))
 
 
-def _newton_theta(system: CollocationSystem, theta: float, tol: float = 1e-15, max_steps: int = 30):
+class EigenSystem(Protocol):
+    """What Newton in theta needs of a system D(theta) z = b with eigen functional G = l(theta) . z: the axisymmetric
+    ``CollocationSystem`` at a fixed basis exponent, and the plane ``LinearisedPlaneSystem``."""
+
+    rhs: np.ndarray
+
+    def matrix(self, theta: float) -> np.ndarray: ...
+
+    def functional(self, theta: float) -> np.ndarray: ...
+
+    def functional_derivative(self, theta: float) -> np.ndarray: ...
+
+    def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray: ...
+
+
+def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30
+                 ) -> tuple[float, np.ndarray, float]:
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
     Returns theta, z and the last step. Stops when a step is below tol relative, or once the
@@ -152,7 +171,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
         outer += 1
         system = collocation_system(ops, gamma, theta / math.pi)
         try:
-            new, z, step = _newton_theta(system, theta)
+            new, z, step = newton_theta(system, theta)
         except SolverError:
             if bracketed:
                 raise
@@ -235,27 +254,40 @@ def _at_theta(sol: Eigensolution, theta: float) -> Eigensolution:
     return Eigensolution(system, theta, z, abs(theta - sol.theta))
 
 
-def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, slope: float, res: Resolution,
-                             max_steps: int = 8) -> GuidedSolution:
-    """Stick radius for theta = atan(mu gamma) < pi/2 from a close guess c = 1 - gap and slope = d theta / d xi.
+Solved = TypeVar("Solved")
 
-    Given-c solves (Newton in theta at fixed c, the basis carrying alpha = theta / pi) at xi_k, stepped by
-    xi_{k+1} = xi_k + (theta - theta(xi_k)) / slope, the slope from the last two solves once there are two.
-    Stops when the next step would be below STEP_TOLERANCE in xi, or once steps below 1e-8 stop shrinking (the
-    small jumps of theta(xi) where the layout changes, of the size of the discretisation error); the last solve is
-    then taken at theta itself (``_at_theta``). Raises SolverError if it does not settle.
-    """
+
+def guided_steps(theta: float, c: float, gap: float, slope: float, solve: Callable[[float, float], Solved],
+                 theta_of: Callable[[Solved], float], max_steps: int = 8) -> tuple[Solved, float, float]:
+    """Given-c solves ``solve(c, gap)`` at xi_k = logit c_k, stepped by xi_{k+1} = xi_k + (theta - theta(xi_k)) / slope
+    (slope = d theta / d xi, the caller's first, then from the last two solves) until the next step would be below
+    STEP_TOLERANCE in xi, or once steps below 1e-8 stop shrinking (the small jumps of theta(xi) where the layout
+    changes, of the size of the discretisation error). Returns the last solve, the slope and the step not taken.
+    Raises SolverError if it does not settle."""
     xi = math.log(c) - math.log(gap)
     previous: tuple[float, float] | None = None
     last_step = math.inf
     for _ in range(max_steps):
-        sol = solve_given_c(c, gap, gamma, theta, res)
-        if previous is not None and sol.theta != previous[1] and xi != previous[0]:
-            slope = (sol.theta - previous[1]) / (xi - previous[0])
-        step = (theta - sol.theta) / slope
+        sol = solve(c, gap)
+        found = theta_of(sol)
+        if previous is not None and found != previous[1] and xi != previous[0]:
+            slope = (found - previous[1]) / (xi - previous[0])
+        step = (theta - found) / slope
         if abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step):
-            return GuidedSolution(_at_theta(sol, theta), slope, abs(step))
-        previous, last_step = (xi, sol.theta), abs(step)
+            return sol, slope, abs(step)
+        previous, last_step = (xi, found), abs(step)
         xi += step
         c, gap = _logit_parts(xi)
     raise SolverError(f"the stick radius for theta = {theta} did not settle from the guide (last step {step:.3g} in logit c)")
+
+
+def solve_given_theta_guided(theta: float, gamma: float, c: float, gap: float, slope: float, res: Resolution,
+                             max_steps: int = 8) -> GuidedSolution:
+    """Stick radius for theta = atan(mu gamma) < pi/2 from a close guess c = 1 - gap and slope = d theta / d xi.
+
+    ``guided_steps`` over given-c solves (Newton in theta at fixed c, the basis carrying alpha = theta / pi); the
+    last solve is then taken at theta itself (``_at_theta``). Raises SolverError if it does not settle.
+    """
+    sol, slope, remaining = guided_steps(theta, c, gap, slope, lambda c, gap: solve_given_c(c, gap, gamma, theta, res),
+                                         lambda sol: sol.theta, max_steps)
+    return GuidedSolution(_at_theta(sol, theta), slope, remaining)

@@ -4,9 +4,13 @@ theta = atan(mu gamma) = pi alpha runs over [0, pi/2] as mu runs over [0, inf]; 
 D(theta) z = b of ``numeric.core.plane_operators`` is analytic in theta, and the eigenvalue
 condition G = l(theta) . z = 0 (phi(c-) = 0) picks the friction.
 
-Given c: Newton in theta on G with one LU a step (z and the adjoint of l from one factorisation,
-dG/dtheta = l' . z - y . D' z with D^T y = l), the basis exponent alpha = theta / pi following theta at
-every step, safeguarded by bisection once the root is bracketed.
+Given c, from a close guess (the table of ``numeric.core.plane_guess``): ``plane_given_c_linearised``, Newton in
+theta (``numeric.core.eigenvalue.newton_theta``, the axisymmetric solver's) on the system linearised in the basis
+exponent about the guess (``LinearisedPlaneSystem``: two assemblies, then an LU a step); G depends on the basis exponent
+nearly as much as on theta, so the exponent cannot be held fixed as in the axisymmetric solver, but to first order it
+can follow theta at no cost. Otherwise (no table there, or the linearised iteration does not settle): the careful
+``plane_given_c``, Newton with both assemblies at every step (dG/dtheta = l' . z - y . D' z with D^T y = l, the basis
+exponent alpha = theta / pi following theta), safeguarded by bisection once the root is bracketed.
 
 Given theta (alpha known exactly): the secant method in xi = log(c / (1 - c)) on G, each step a new
 layout. theta = pi/2 is the limit mu -> inf: its root is the largest stick width c_max.
@@ -21,16 +25,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
+from numeric.core.eigenvalue import newton_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
-from numeric.core.plane_operators import PlaneCollocationSystem, PlaneOperators, plane_collocation_system
+from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocationSystem, PlaneOperators, linearised_system,
+                                          plane_collocation_system)
 
-__all__ = ["PlaneEigensolution", "plane_given_c", "plane_given_theta", "partner_shift_theta", "partner_shift_xi",
-           "ALPHA_TOLERANCE", "CHORD_BELOW", "CLOSE", "THETA_MAX"]
+__all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
+           "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "slope_along", "ALPHA_TOLERANCE",
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
@@ -48,7 +56,8 @@ class PlaneEigensolution:
     theta: float
     coefficients: np.ndarray
     last_step: float  # the last Newton step in theta, or secant step in logit c
-    slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution
+    slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution, where the iteration had it
+    linearised: LinearisedPlaneSystem | None = None  # the linearised system that gave it (then dG/dtheta on demand)
 
     @property
     def layout(self) -> PlaneLayout:
@@ -79,36 +88,87 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     return system, z, float(l @ z), float(dG)
 
 
-#: A Newton step below this (relative) from a close guess is the last: its successor is below ~1e-14.
-CLOSE = 1e-7
-
 #: Newton keeps its last derivative (a chord step) while its steps are below this, relative: the derivative is then
 #: good to ~1e-4 and the chord step's error ~1e-4 of the step, far below the step itself.
 CHORD_BELOW = 1e-4
 
 
+@lru_cache(maxsize=4)
+def plane_operators_at(c: float, gap: float, res: PlaneResolution) -> PlaneOperators:
+    """The alpha-independent transforms of the layout for c = 1 - gap at res (they depend on the discretisation only,
+    not on gamma or mu: a sweep over nu at one c forms them once; the last few kept)."""
+    return PlaneOperators(plane_layout(c, gap, res))
+
+
+#: Step of the difference quotient dD/dalpha of ``LinearisedPlaneSystem``, relative to alpha. Measured at nu = 0.3,
+#: c = 0.5 against the converged root: from guesses 1e-7 off it leaves 1.4e-12 relative in theta (the rounding floor
+#: of G, ~1e-12; a step of 1e-9 leaves 4e-12 from rounding, one of 1e-6 5e-12 from the curvature).
+EXPONENT_STEP = 1e-7
+#: The linearised iteration is done when Newton moved theta by less than this, relative: the first-order model's
+#: error is then below ~1e-12 (measured, see ``EXPONENT_STEP``); else it starts again about the new theta.
+OUTER_TOLERANCE = 1e-7
+#: Linearised iterations before the careful iteration takes over.
+MAX_OUTER = 3
+
+
+def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: float, res: PlaneResolution,
+                             spread: float = EXPONENT_STEP, max_outer: int = MAX_OUTER) -> PlaneEigensolution:
+    """theta for stick half-width c = 1 - gap from a close guess: Newton (``numeric.core.eigenvalue.newton_theta``) on
+    the system linearised in the basis exponent about the guess (``LinearisedPlaneSystem``), its difference step the
+    larger of ``EXPONENT_STEP`` and ``spread`` (the guess's expected relative error: the secant then spans the root);
+    again about the result while Newton moved theta by more than ``OUTER_TOLERANCE``. Raises SolverError if that takes
+    more than ``max_outer`` rounds or Newton does not converge (the caller falls back to ``plane_given_c``)."""
+    ops = plane_operators_at(c, gap, res)
+    theta = min(theta_guess, THETA_MAX)
+    step = max(EXPONENT_STEP, spread)
+    for _ in range(max_outer):
+        system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
+        new, z, last = newton_theta(system, theta)
+        moved = abs(new - theta)
+        if not 0.0 < new < THETA_MAX:
+            break
+        if moved <= OUTER_TOLERANCE * new:
+            return PlaneEigensolution(system.at(new), ops, new, z, last, math.nan, system)
+        theta, step = new, max(EXPONENT_STEP, moved / new)
+    raise SolverError(f"the linearised iteration did not settle for c = {c}, gamma = {gamma}")
+
+
+def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolution:
+    """The solution on the same (linearised) system at theta itself: given mu, the last given-c solve's theta differs
+    from atan(mu gamma) by its remaining step in c (below 1e-12 in logit c), and the stresses are taken at mu."""
+    system = solution.linearised
+    if system is None or theta == solution.theta:
+        return solution
+    z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+    return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta), math.nan, system)
+
+
+def slope_along(solution: PlaneEigensolution) -> float:
+    """dG/dtheta along alpha = theta/pi at the solution: the iteration's, or (linearised) one LU of its system."""
+    if math.isfinite(solution.slope) or solution.linearised is None:
+        return solution.slope
+    system, theta = solution.linearised, solution.theta
+    lu = EquilibratedLU(system.matrix(theta))
+    z = lu.solve(system.rhs)
+    y = lu.solve_transposed(system.functional(theta))
+    return float(system.functional_derivative(theta) @ z - y @ system.derivative_times(theta, z))
+
+
 def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: PlaneResolution,
-                  max_steps: int = 40, close: bool = False) -> PlaneEigensolution:
+                  max_steps: int = 40) -> PlaneEigensolution:
     """theta = atan(mu gamma) for stick half-width c = 1 - gap: Newton in theta from a guess, the basis exponent
     following theta at every step, safeguarded by bisection (in log mu) once the root is bracketed.
 
     G(theta) (the mode's amplitude) is smooth and decreasing in theta over (0, pi/2] (it changes sign once at
     the eigenvalue); the iteration stops when a step is below ``ALPHA_TOLERANCE`` relative, or when the steps
     stop shrinking below 1e-10 relative (the rounding floor of G). The derivative is formed again only while the
-    steps exceed ``CHORD_BELOW`` relative (or after a bisection). ``close``: the guess is a coarser resolution's
-    root; one Newton step is taken and accepted if it is below ``CLOSE`` relative (the coefficients are those at the
-    guess: the stresses move by the step times their derivative in theta, ~1e-12)."""
-    ops = PlaneOperators(plane_layout(c, gap, res))
+    steps exceed ``CHORD_BELOW`` relative (or after a bisection)."""
+    ops = plane_operators_at(c, gap, res)
     theta = theta_guess
     theta = min(theta, THETA_MAX)
     lo, hi = 0.0, THETA_MAX  # bracket: G > 0 at lo, G < 0 at hi
     previous = math.inf
     dG = math.nan
-    if close:  # one Newton step from a guess within ~1e-7: the next would be ~1e-14, below the rounding floor
-        system, z, G, dG = _evaluate(ops, gamma, theta)
-        new = theta - G / dG
-        if abs(new - theta) <= CLOSE * theta and new < THETA_MAX:
-            return PlaneEigensolution(system, ops, new, z, abs(new - theta), dG)
     for _ in range(max_steps):
         fresh = not (previous <= CHORD_BELOW * theta)
         system, z, G, slope = _evaluate(ops, gamma, theta, derivative=fresh)
@@ -146,15 +206,15 @@ def partner_shift_theta(c: float, gap: float, gamma: float, solution: PlaneEigen
                         ) -> float:
     """theta_partner - theta for the resolution ``res`` (one evaluation of its G at the solution's theta, over the
     solution's slope: the two resolutions' G differ by the discretisation error, their slopes by far less)."""
-    ops = PlaneOperators(plane_layout(c, gap, res))
+    ops = plane_operators_at(c, gap, res)
     G = _evaluate(ops, gamma, solution.theta, derivative=False)[2]
-    return -G / solution.slope
+    return -G / slope_along(solution)
 
 
 def _residual(xi: float, theta: float, gamma: float, res: PlaneResolution):
     c = 1.0 / (1.0 + math.exp(-xi))
     gap = 1.0 / (1.0 + math.exp(xi))
-    ops = PlaneOperators(plane_layout(c, gap, res))
+    ops = plane_operators_at(c, gap, res)
     system = plane_collocation_system(ops, gamma, theta / math.pi)
     z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
     return float(system.functional(theta) @ z), system, ops, z

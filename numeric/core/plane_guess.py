@@ -1,16 +1,21 @@
-"""A table-free-of-solves first guess of the strip punch's friction for a given stick half-width (the Newton start).
+"""The plane solver's starting guess: theta = atan(mu gamma) of the strip punch over the (c, gamma) plane, to ~1e-9.
 
-The first-order law tan(theta) = gamma^2 K(c)/K'(c) (``asymptotics.plane``) is off by up to a factor 3 at
-gamma = 1/2 near the largest stick width, where the true mu grows without bound. The ratio
+The stored functions are Chebyshev series (``plane_guess_data``, written by ``derivations/build_plane_guess.py`` from
+level-2 solves) over three regions, each a rectangle in coordinates in which they are smooth:
 
-    R(c, gamma) = gamma^2 cot(theta) / (K'(c)/K(c)),      theta = atan(mu gamma),
+- S: c from C_MIN to 1 - GAP_S, in u = logit c and gamma^2 (mu is even in the sign of gamma). Stored: the ratio to
+  the first-order law, R = gamma^2 cot(theta) / w, w = K'(c)/K(c) (``asymptotics.plane``: tan(theta) = gamma^2 / w),
+  1 - O(gamma^2) as c -> 0 and smooth through the largest stick width c_max(gamma), where it vanishes.
+- N (small gamma, up to GAMMA_N, where c_max lies far above): 1 - c from GAP_N to GAP_S, in u = log(1 - c) and
+  gamma^2. Stored: R.
+- L (near c_max, gamma from GAMMA_N): 1 - c from 1 - c_max to GAP_S, in u = log(1 + x), x = log((1 - c)/(1 - c_max))
+  (the approach to c_max, 1 - c - (1 - c_max) ~ A/(mu gamma), spread out), and gamma. Stored: x tan(theta), finite at
+  c_max. 1 - c_max(gamma) is itself a series in gamma, of h = atanh(gamma) log(8/(1 - c_max)) (smooth: 1 - c_max
+  falls like exp(-pi/(k eps)), eps = atanh(gamma)/pi), from the limit problem (``numeric.solutions.plane_solver``).
 
-is smooth: 1 - O(gamma^2) as c -> 0 and falling to 0 at c_max. It is stored (``plane_guess_data``, written by
-``derivations/build_plane_guess.py`` from level-1 solves) as a Chebyshev product in v = w_top / w, w = K'(c)/K(c)
-(w -> inf as c -> 0, so v -> 0 like 1/log(1/c)) and gamma, for w >= w_top = w(c_top(gamma)),
-c_top = 1 - 2 (1 - c_max) - 2e-3 with 1 - c_max from a fit (``gap_fit``). Outside (gamma below the table, c above c_top)
-the guess is the first-order law's, or the approach to c_max. The table's accuracy is tested at held-out points
-(``tests/test_plane_solver.py``): it is a starting point, not a result.
+Outside them (c below C_MIN, gamma below GAMMA_N with 1 - c below GAP_N, c above the tabulated c_max) ``theta_guess``
+returns None and the caller starts from the first-order law or the approach to c_max. The worst relative error in mu
+at held-out points, measured by the build against fresh level-2 solves, is ``plane_guess_data.ERRORS`` (per region).
 
 References
 ----------
@@ -21,83 +26,214 @@ References
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
-from scipy import optimize, special
-
-from asymptotics.plane import stick_width_first_order
+from numpy.polynomial import chebyshev
+from scipy import special
 
 from numeric.core import plane_guess_data as data
 
-__all__ = ["gap_fit", "elliptic_ratio", "top_of_table", "ratio_nodes", "theta_guess", "stick_width_guess", "chebyshev_nodes"]
+__all__ = ["gap_fit", "elliptic_ratio", "GuessRegion", "REGIONS", "region_of", "coordinate", "gap_and_c",
+           "stored_value", "theta_from_stored", "u_range", "gap_max", "gap_max_stored", "GAP_MAX_RANGE", "chebyshev_nodes",
+           "Guess", "theta_guess", "stick_width_guess"]
 
 
 def gap_fit(gamma: float) -> float:
     """1 - c_max(gamma), roughly: 8 exp(-pi/(k eps)), eps = atanh(gamma)/pi, k = 1.87 + 0.97 gamma (a fit to the limit
-    problem at nu = 0.1 ... -0.75, 3 % in 1 - c_max)."""
+    problem at nu = 0.1 ... -0.75, 3 % in 1 - c_max there; a factor 2 at gamma = 0.19, 4 at 0.134)."""
     eps = math.atanh(gamma) / math.pi
     return 8.0 * math.exp(-math.pi / ((1.87 + 0.97 * gamma) * eps))
 
 
-def elliptic_ratio(c: float) -> float:
-    """K'(c)/K(c) (modulus c), without the cancellation of 1 - c^2."""
-    return float(special.ellipkm1(c * c) / special.ellipkm1((1.0 - c) * (1.0 + c)))
+def elliptic_ratio(c: float, gap: float) -> float:
+    """w = K'(c)/K(c) (modulus c) for c = 1 - gap, without the cancellation of 1 - c^2 = gap (1 + c)."""
+    return float(special.ellipkm1(c * c) / special.ellipkm1(gap * (1.0 + c)))
 
 
-def top_of_table(gamma: float) -> float:
-    """c_top = 1 - 2 (1 - c_max) - 2e-3 by ``gap_fit`` (smooth in gamma): the table stops there."""
-    return 1.0 - 2.0 * gap_fit(gamma) - 2e-3
+def chebyshev_nodes(n: int) -> np.ndarray:
+    """n Chebyshev points of the first kind on [-1, 1] (descending)."""
+    return np.cos(math.pi * (np.arange(n) + 0.5) / n)
 
 
-def chebyshev_nodes(n: int, lo: float, hi: float) -> np.ndarray:
-    """n Chebyshev points of the first kind on [lo, hi]."""
-    k = np.arange(n)
-    return 0.5 * (lo + hi) + 0.5 * (hi - lo) * np.cos((2 * k + 1) * math.pi / (2 * n))
+@dataclass(frozen=True, slots=True)
+class GuessRegion:
+    """One rectangle of the table: its coordinate u ("logit_c", "log_gap", "log_gap_ratio"), its band of gamma and
+    whether the gamma coordinate is gamma^2."""
+
+    name: str
+    coordinate: str
+    gamma_range: tuple[float, float]
+    gamma_squared: bool
 
 
-def ratio_nodes() -> tuple[np.ndarray, np.ndarray]:
-    """The table's nodes: v (over [V_MIN, 1]) and gamma (over [GAMMA_MIN, GAMMA_MAX])."""
-    return (chebyshev_nodes(data.N_V, data.V_MIN, 1.0), chebyshev_nodes(data.N_GAMMA, data.GAMMA_MIN, data.GAMMA_MAX))
+REGIONS: dict[str, GuessRegion] = {name: GuessRegion(name, coordinate, tuple(band), squared)
+                                   for name, (coordinate, band, squared) in data.REGIONS.items()}
+#: The band of gamma of the series of 1 - c_max (that of region L).
+GAP_MAX_RANGE = REGIONS["L"].gamma_range
 
 
-def _barycentric(nodes: np.ndarray, x: float) -> np.ndarray:
-    """Weights w_k with f(x) = sum_k w_k f(nodes_k) for the interpolant at Chebyshev points of the first kind."""
-    n = nodes.size
-    k = np.arange(n)
-    bary = (-1.0) ** k * np.sin((2 * k + 1) * math.pi / (2 * n))
-    diff = x - nodes
-    if np.any(diff == 0.0):
-        return (diff == 0.0).astype(float)
-    terms = bary / diff
-    return terms / terms.sum()
+def gap_max_stored(gamma: float, gap_max_value: float) -> float:
+    """The stored function of 1 - c_max: h = atanh(gamma) log(8 / (1 - c_max))."""
+    return math.atanh(gamma) * (math.log(8.0) - math.log(gap_max_value))
 
 
-def theta_guess(c: float, gamma: float) -> float:
-    """atan(mu gamma) for stick half-width c: the table's ratio where it reaches, else the first-order law."""
-    w = elliptic_ratio(c)
-    first_order = math.atan(gamma * gamma / w)
-    if not data.GAMMA_MIN <= gamma <= data.GAMMA_MAX:
-        return first_order
-    c_top = top_of_table(gamma)
-    if c > c_top:
-        return first_order
-    v = elliptic_ratio(c_top) / w
-    if v < data.V_MIN:
-        return first_order
-    v_nodes, g_nodes = ratio_nodes()
-    ratio = float(_barycentric(v_nodes, v) @ np.asarray(data.RATIO) @ _barycentric(g_nodes, gamma))
-    return math.atan(gamma * gamma / (w * ratio))
+def _series(coefficients: np.ndarray, t: float) -> float:
+    """The Chebyshev series at t (nan for an empty one: the table being built)."""
+    return float(chebyshev.chebval(t, coefficients)) if len(coefficients) else math.nan
 
 
-def stick_width_guess(theta: float, gamma: float) -> float:
-    """The c whose guessed theta (``theta_guess``) is theta, where the table reaches (a root on [c(V_MIN), c_top] by
-    scipy's brentq), else the first-order law's inverse (theta functions, ``asymptotics.plane``)."""
-    first_order = float(stick_width_first_order(math.tan(theta) / gamma, gamma))
-    if not data.GAMMA_MIN <= gamma <= data.GAMMA_MAX:
-        return first_order
-    c_top = top_of_table(gamma)
-    c_low = float(stick_width_first_order(data.V_MIN * 0.5 / elliptic_ratio(c_top), 0.5))  # w = w_top / V_MIN
-    f_low, f_top = theta_guess(c_low, gamma) - theta, theta_guess(c_top, gamma) - theta
-    if f_low * f_top > 0.0:
-        return first_order
-    return float(optimize.brentq(lambda c: theta_guess(c, gamma) - theta, c_low, c_top, xtol=1e-14, rtol=1e-12))
+def _unit(value: float, lo: float, hi: float) -> float:
+    return 2.0 * (value - lo) / (hi - lo) - 1.0
+
+
+def gap_max(gamma: float) -> float:
+    """1 - c_max(gamma) from its series (GAMMA_N <= gamma <= GAMMA_MAX; nan outside)."""
+    g0, g1 = GAP_MAX_RANGE
+    if not g0 <= gamma <= g1:
+        return math.nan
+    h = _series(np.asarray(data.GAP_MAX_SERIES), _unit(gamma, g0, g1))
+    return 8.0 * math.exp(-h / math.atanh(gamma))
+
+
+def u_range(region: GuessRegion, gamma: float) -> tuple[float, float]:
+    """The ends of u in region at gamma."""
+    if region.coordinate == "logit_c":
+        return math.log(data.C_MIN) - math.log1p(-data.C_MIN), math.log1p(-data.GAP_S) - math.log(data.GAP_S)
+    if region.coordinate == "log_gap":
+        return math.log(data.GAP_N), math.log(data.GAP_S)
+    return 0.0, math.log1p(math.log(data.GAP_S / gap_max(gamma)))
+
+
+def coordinate(region: GuessRegion, c: float, gap: float, gamma: float) -> float:
+    """u of region at c = 1 - gap (see the module docstring)."""
+    if region.coordinate == "logit_c":
+        return math.log(c) - math.log(gap)
+    if region.coordinate == "log_gap":
+        return math.log(gap)
+    return math.log1p(math.log(gap / gap_max(gamma)))
+
+
+def gap_and_c(region: GuessRegion, u: float, gamma: float) -> tuple[float, float]:
+    """1 - c and c at u of region (each without cancellation)."""
+    if region.coordinate == "logit_c":
+        return 1.0 / (1.0 + math.exp(u)), 1.0 / (1.0 + math.exp(-u))
+    gap = math.exp(u) if region.coordinate == "log_gap" else gap_max(gamma) * math.exp(math.expm1(u))
+    return gap, 1.0 - gap
+
+
+def stored_value(region: GuessRegion, c: float, gap: float, gamma: float, theta: float) -> float:
+    """The stored function at (c, gamma) for theta: R = gamma^2 cot(theta) / w (S, N), x tan(theta) (L)."""
+    if region.coordinate == "log_gap_ratio":
+        return math.log(gap / gap_max(gamma)) * math.tan(theta)
+    return gamma * gamma / (math.tan(theta) * elliptic_ratio(c, gap))
+
+
+def theta_from_stored(region: GuessRegion, c: float, gap: float, gamma: float, value: float) -> float:
+    """The inverse of ``stored_value``."""
+    if region.coordinate == "log_gap_ratio":
+        return math.atan(value / math.log(gap / gap_max(gamma)))
+    return math.atan(gamma * gamma / (value * elliptic_ratio(c, gap)))
+
+
+def region_of(c: float, gap: float, gamma: float) -> GuessRegion | None:
+    """The region holding (c, gamma), or None."""
+    if c < data.C_MIN or not 0.0 < gamma <= data.GAMMA_MAX or not data.COEFFICIENTS:
+        return None
+    if gap >= data.GAP_S:
+        return REGIONS["S"]
+    if gamma <= data.GAMMA_N:
+        return REGIONS["N"] if gap >= data.GAP_N else None
+    return REGIONS["L"] if gap > gap_max(gamma) else None
+
+
+@lru_cache(maxsize=64)
+def _x_series(name: str, gamma: float) -> np.ndarray:
+    """Region ``name``'s series in x at this gamma (the gamma direction summed once)."""
+    region = REGIONS[name]
+    g0, g1 = region.gamma_range
+    y = _unit(gamma * gamma, g0 * g0, g1 * g1) if region.gamma_squared else _unit(gamma, g0, g1)
+    a = np.asarray(data.COEFFICIENTS[name])  # (nx, ny)
+    return a @ chebyshev.chebvander(np.array([y]), a.shape[1] - 1)[0]
+
+
+@dataclass(frozen=True, slots=True)
+class Guess:
+    """theta at (c, gamma) from the table and d theta / d logit c there."""
+
+    theta: float
+    slope: float
+
+
+def _theta_at(region: GuessRegion, u: float, gamma: float, bounds: tuple[float, float]) -> tuple[float, float, float]:
+    """theta, c and 1 - c at u of region (``bounds``: its u range at this gamma)."""
+    lo, hi = bounds
+    gap, c = gap_and_c(region, u, gamma)
+    value = _series(_x_series(region.name, gamma), _unit(u, lo, hi))
+    return theta_from_stored(region, c, gap, gamma, value), c, gap
+
+
+#: Step in u (relative to the region's range) of the central difference that gives d theta / du.
+SLOPE_STEP = 1e-5
+
+
+def _evaluate(region: GuessRegion, u: float, gamma: float) -> tuple[float, float, float, float]:
+    """theta, d theta / du (a central difference of the series, ~1e-10 relative), c and 1 - c at u of region."""
+    bounds = u_range(region, gamma)
+    h = SLOPE_STEP * (bounds[1] - bounds[0])
+    theta, c, gap = _theta_at(region, u, gamma, bounds)
+    slope = (_theta_at(region, u + h, gamma, bounds)[0] - _theta_at(region, u - h, gamma, bounds)[0]) / (2.0 * h)
+    return theta, slope, c, gap
+
+
+def _du_dxi(region: GuessRegion, u: float, c: float) -> float:
+    """d u / d logit c: 1 (S), -c (N: d log(1 - c) = -c d logit c), -c exp(-u) (L: u = log(1 + x), dx = -c d logit c)."""
+    if region.coordinate == "logit_c":
+        return 1.0
+    if region.coordinate == "log_gap":
+        return -c
+    return -c * math.exp(-u)
+
+
+def theta_guess(c: float, gap: float, gamma: float) -> Guess | None:
+    """theta = atan(mu gamma) and d theta / d logit c for stick half-width c = 1 - gap, or None outside the table."""
+    region = region_of(c, gap, gamma)
+    if region is None:
+        return None
+    u = coordinate(region, c, gap, gamma)
+    theta, slope, _, _ = _evaluate(region, u, gamma)
+    return Guess(theta, slope * _du_dxi(region, u, c))
+
+
+def stick_width_guess(theta: float, gamma: float) -> tuple[float, float, Guess] | None:
+    """c, 1 - c and the table's theta and d theta / d logit c there, where the table's theta is ``theta`` (Newton in
+    u on the series, kept in the region's range by bisection); None where the table does not reach."""
+    if not 0.0 < gamma <= data.GAMMA_MAX or not 0.0 < theta < 0.5 * math.pi:
+        return None
+    for name in ("S", "N") if gamma <= data.GAMMA_N else ("S", "L"):
+        region = REGIONS[name]
+        lo, hi = u_range(region, gamma)
+        if region.coordinate == "log_gap_ratio":
+            lo = 1e-12 * hi  # u = 0 is c_max, the limit mu -> inf
+        a, b = (lo, hi) if region.coordinate == "logit_c" else (hi, lo)  # theta increases from a to b
+        ta, tb = _evaluate(region, a, gamma)[0], _evaluate(region, b, gamma)[0]
+        if not ta <= theta <= tb:
+            continue
+        u = a + (b - a) * (theta - ta) / (tb - ta)
+        for _ in range(60):
+            value, slope = _evaluate(region, u, gamma)[:2]
+            if value < theta:
+                a = u
+            else:
+                b = u
+            new = u + (theta - value) / slope if slope != 0.0 else math.nan
+            if not min(a, b) <= new <= max(a, b):
+                new = 0.5 * (a + b)
+            done = abs(new - u) <= 1e-14 * max(1.0, abs(u))
+            u = new
+            if done:
+                break
+        value, slope, c, gap = _evaluate(region, u, gamma)
+        return c, gap, Guess(value, slope * _du_dxi(region, u, c))
+    return None

@@ -53,7 +53,8 @@ true exponent (with beta held at 1e-3 instead, the functional near c_max at nu =
 exponent). The eigenvalue does not depend on the mode's column (at the root its amplitude is 0), only the smoothness
 of G near the root does; the limit mu -> inf is taken by extrapolation (``numeric.solutions.plane_solver``)."""
 
-__all__ = ["MODE_BETA_MIN", "PlaneOperators", "Transforms", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor"]
+__all__ = ["MODE_BETA_MIN", "PlaneOperators", "Transforms", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
+           "LinearisedPlaneSystem", "linearised_system"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -210,6 +211,18 @@ class PlaneCollocationSystem:
         out[:, 2 * ns:] = -math.sin(theta) * self.normal + normal_factor(theta) * self.shear
         return out
 
+    def times(self, theta: float, z: np.ndarray) -> np.ndarray:
+        """D(theta) z, without forming the matrix."""
+        ns2 = 2 * self.n_stick
+        slip = z[ns2:]
+        return (self.stick @ z[:ns2] + normal_factor(theta) * (self.normal @ slip) + math.sin(theta) * (self.shear @ slip)
+                + self.mode_stick * z[-1])
+
+    def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray:
+        """(d D / d theta) z, without forming the matrix."""
+        slip = z[2 * self.n_stick:]
+        return -math.sin(theta) * (self.normal @ slip) + normal_factor(theta) * (self.shear @ slip)
+
     def functional(self, theta: float) -> np.ndarray:
         """l with l . z = a, the generic mode's amplitude (0 at the eigenvalue)."""
         out = np.zeros(self.rhs.size)
@@ -262,3 +275,61 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) ->
     rhs = np.zeros(n)
     rhs[-1] = 1.0
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals)
+
+
+def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta: float) -> PlaneCollocationSystem:
+    """The system whose arrays are base's + delta x rate's (the basis exponent base.alpha + delta, to first order)."""
+    return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, base.stick + delta * rate.stick,
+                                  base.normal + delta * rate.normal, base.shear + delta * rate.shear,
+                                  base.mode_stick + delta * rate.mode_stick, base.rhs, base.stick_columns,
+                                  base.slip_columns, base.integrals + delta * rate.integrals)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class LinearisedPlaneSystem:
+    """The plane system with its basis exponent following theta, alpha = theta / pi, to first order about alpha0:
+    D(theta) = D(theta; alpha0) + (theta/pi - alpha0) dD/dalpha(theta), dD/dalpha a difference quotient of two
+    assemblies (``rate``: the difference of every array over the step in alpha).
+
+    The eigen functional G = a (the generic mode's amplitude) depends on the basis exponent nearly as strongly as on
+    theta: at the root, dG/dalpha / pi = -1.005 dG/dtheta at nu = 0.3, c = 0.5 (measured), so Newton at a fixed basis
+    lands on a theta that follows the basis, not the eigenvalue. Along alpha = theta/pi, with the first-order term,
+    the root of this system is that of the careful iteration to (theta/pi - alpha0) x (the step in alpha) x 44/alpha
+    relative (measured at nu = 0.3, c = 0.5), besides rounding. It offers what ``numeric.core.eigenvalue.newton_theta``
+    needs (matrix, functional, functional_derivative, derivative_times, rhs), and ``at(theta)``, the system at
+    alpha = theta/pi as a ``PlaneCollocationSystem`` (its arrays to first order), for the fields."""
+
+    base: PlaneCollocationSystem
+    rate: PlaneCollocationSystem
+
+    @property
+    def rhs(self) -> np.ndarray:
+        return self.base.rhs
+
+    def at(self, theta: float) -> PlaneCollocationSystem:
+        return _combined(self.base, self.rate, theta / math.pi - self.base.alpha)
+
+    def matrix(self, theta: float) -> np.ndarray:
+        return self.at(theta).matrix(theta)
+
+    def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray:
+        """d/dtheta [D(theta; alpha0 + delta) z], delta = theta/pi - alpha0: the theta-derivative at the combined arrays
+        and the rate's D z / pi."""
+        return self.at(theta).derivative_times(theta, z) + self.rate.times(theta, z) / math.pi
+
+    def functional(self, theta: float) -> np.ndarray:
+        return self.base.functional(theta)
+
+    def functional_derivative(self, theta: float) -> np.ndarray:
+        return self.base.functional_derivative(theta)
+
+
+def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
+    """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
+    base = plane_collocation_system(ops, gamma, alpha)
+    other = plane_collocation_system(ops, gamma, alpha + step)
+    rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
+                                  (other.normal - base.normal) / step, (other.shear - base.shear) / step,
+                                  (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),
+                                  base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step)
+    return LinearisedPlaneSystem(base, rate)

@@ -32,6 +32,7 @@ from asymptotics.plane import bonded_traction, pressure_sadowsky
 from numeric.core.errors import NoEigenvalueError
 from numeric.core.plane_fields import PlaneField
 from numeric.solutions.plane_solver import DEFAULT_LEVEL, PLANE_LEVELS, solve_given_c, solve_given_mu, solve_limit
+from numeric.solutions.solution import DeferredError
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
            "plane_largest_stick_width", "points"]
@@ -102,7 +103,8 @@ class StripPunchSolution:
         Stick half-width over a, and 1 - c (without the cancellation of forming it from c).
     error : float
         Estimated absolute error of mu (given c) or c (given mu; of 1 - c_max in the limit mu -> inf):
-        the difference from the resolution one degree lower, at least the rounding floor; 0 for closed forms.
+        the difference from the resolution one degree lower, at least the rounding floor; 0 for closed forms. On
+        the solver route it is formed when first read (a solve at the lower resolution, ``DeferredError``).
     route : str
         "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns" or "limit mu -> inf ...".
     residual : float
@@ -117,10 +119,15 @@ class StripPunchSolution:
     mu: float
     c: float
     gap: float
-    error: float
+    _error: float | DeferredError
     route: str
     residual: float = 0.0
     _field: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def error(self) -> float:
+        """Estimated absolute error of mu (given c) or c (given mu): see the class docstring."""
+        return self._error.value() if isinstance(self._error, DeferredError) else self._error
 
     def pressure(self, x: ArrayLike) -> np.ndarray | float:
         """p(x) = sigma_zz a / P (even)."""
@@ -146,7 +153,7 @@ def _level(level: int) -> int:
     return level
 
 
-def _from_field(nu: float | None, fine: PlaneField, error: float, level: int, mu: float | None = None,
+def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError, level: int, mu: float | None = None,
                 route: str | None = None) -> StripPunchSolution:
     route = route or f"solver level {level}, {fine.n_unknowns} unknowns"
     return StripPunchSolution(nu, fine.gamma, fine.mu if mu is None else mu, fine.c, fine.gap, error, route,

@@ -6,10 +6,17 @@ functional at the level's root, over the level's slope), at least ``ROUNDING_FLO
 value (the scatter of mu between degrees 20 ... 28, where the discretisation error is far below it,
 measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]).
 
-Given c: Newton in theta = atan(mu gamma) (``numeric.core.plane_eigenvalue``) from the guess table
-(``numeric.core.plane_guess``; the first-order law mu/gamma = K(c)/K'(c) of ``asymptotics.plane`` where it does
-not reach). Given mu: the secant method in logit(c) at theta = atan(mu gamma), from the table's inverse (kept
-below the largest stick width). mu -> inf: the limit problem theta = pi/2, whose root is the largest stick
+The estimate is a solve at the partner resolution, so it is formed when ``error`` is first read
+(``numeric.solutions.solution.DeferredError``).
+
+Given c: Newton in theta = atan(mu gamma) on the system linearised in the basis exponent
+(``numeric.core.plane_eigenvalue.plane_given_c_linearised``) from the guess table (``numeric.core.plane_guess``,
+~1e-9: one round of two assemblies and an LU or two); where the table does not reach, or that does not settle, the
+careful Newton of ``plane_given_c`` from the table's guess or the first-order law mu/gamma = K(c)/K'(c) of
+``asymptotics.plane``. Given mu, where the table reaches: given-c solves from its c, stepped in logit c by its
+d theta / d logit c (``numeric.core.eigenvalue.guided_steps``, the axisymmetric solver's; two solves, the table's c
+being good to ~1e-9); elsewhere the secant method in logit(c) at theta = atan(mu gamma) from the first-order law's c
+(kept below the largest stick width). mu -> inf: the limit problem theta = pi/2, whose root is the largest stick
 width c_max.
 
 References
@@ -24,12 +31,17 @@ import math
 from dataclasses import dataclass
 
 
-from numeric.core.errors import NoEigenvalueError
+from asymptotics.plane import stick_width_first_order
+
+from numeric.core.eigenvalue import guided_steps
+from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.plane_charts import PlaneResolution, plane_partner
-from numeric.core.plane_eigenvalue import partner_shift_theta, partner_shift_xi, plane_given_c, plane_given_theta
+from numeric.core.plane_eigenvalue import (PlaneEigensolution, partner_shift_theta, partner_shift_xi, plane_at_theta,
+                                           plane_given_c, plane_given_c_linearised, plane_given_theta)
 from numeric.core.plane_fields import PlaneField
-from numeric.core.plane_guess import gap_fit, stick_width_guess
-from numeric.core.plane_guess import theta_guess as theta_guess_table
+from numeric.core.plane_guess import elliptic_ratio, gap_fit, stick_width_guess, theta_guess
+from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS
+from numeric.solutions.solution import DeferredError
 
 __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "solve_given_c", "solve_given_mu",
            "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA"]
@@ -49,7 +61,7 @@ class PlaneSolve:
     1 - c_max at mu = inf)."""
 
     field: PlaneField
-    error: float
+    error: float | DeferredError
     level: int
     gap_limit: float = math.nan  # 1 - c_max where the limit mu -> inf was extrapolated
 
@@ -58,22 +70,47 @@ def _mu(theta: float, gamma: float) -> float:
     return math.inf if theta >= HALF_PI else math.tan(theta) / gamma
 
 
-def solve_given_c(c: float, gap: float, gamma: float, level: int, theta_guess: float | None = None) -> PlaneSolve:
-    """mu for stick half-width c = 1 - gap at ``level``; the error is the shift of mu to the partner resolution (one
-    degree lower), from one evaluation of its eigen functional (``partner_shift_theta``). ValueError below
-    ``C_SMALLEST``."""
+#: The guess table's accuracy in theta, relative (its worst held-out error in mu, at least 1e-9): the linearised
+#: iteration's first difference step spans it.
+GUESS_SPREAD = max(1e-9, *(GUESS_ERRORS or {"": 1e-3}).values())
+
+
+def _given_c(c: float, gap: float, gamma: float, res: PlaneResolution, theta: float | None = None
+             ) -> PlaneEigensolution:
+    """The given-c solve from ``theta`` (else the table's guess): linearised Newton, else the careful iteration from
+    that start, else from the first-order law (the careful Newton started within ~1e-12 of the root can end jittering
+    at its rounding floor without settling)."""
+    guess = theta_guess(c, gap, gamma)
+    if theta is None and guess is not None:
+        theta = guess.theta
+    first_order = math.atan(gamma * gamma / elliptic_ratio(c, gap))
+    if theta is not None:
+        try:
+            return plane_given_c_linearised(c, gap, gamma, theta, res, GUESS_SPREAD)
+        except SolverError:
+            try:
+                return plane_given_c(c, gap, gamma, theta, res)
+            except SolverError:
+                pass
+    return plane_given_c(c, gap, gamma, first_order, res)
+
+
+def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
+    """mu for stick half-width c = 1 - gap at ``level``; the error (formed when first read) is the shift of mu to the
+    partner resolution (one degree lower), from one evaluation of its eigen functional (``partner_shift_theta``).
+    ValueError below ``C_SMALLEST``."""
     if c < C_SMALLEST:
         raise ValueError(f"c = {c!r} is below {C_SMALLEST:g}, outside the solver's range (first-order law: "
                          "mu/gamma = K(c)/K'(c))")
     res = PLANE_LEVELS[level]
-    close = theta_guess is not None
-    if theta_guess is None:  # the guess table (``numeric.core.plane_guess``, ~4e-3), Newton at the level from there
-        theta_guess = theta_guess_table(c, gamma)
-    solution = plane_given_c(c, gap, gamma, theta_guess, res, close=close)
+    solution = _given_c(c, gap, gamma, res)
     fine = PlaneField(solution)
-    shift = partner_shift_theta(c, gap, gamma, solution, plane_partner(res))
-    error = max(abs(_mu(fine.theta + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu)
-    return PlaneSolve(fine, error, level)
+
+    def estimate() -> float:
+        shift = partner_shift_theta(c, gap, gamma, solution, plane_partner(res))
+        return max(abs(_mu(fine.theta + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu)
+
+    return PlaneSolve(fine, DeferredError(estimate), level)
 
 
 #: mu gamma of the two solves the limit mu -> inf is extrapolated from: 1 - c = (1 - c_max) + A/(mu gamma) + O(mu^-2),
@@ -113,11 +150,31 @@ C_SMALLEST = 1e-5
 
 
 def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
-    """The stick half-width for friction mu at ``level`` (secant in logit c); error from the partner as for c_max.
+    """The stick half-width for friction mu at ``level``: where the table reaches, given-c solves from its c
+    (``guided_steps``; the error: the partner's theta at the last c, turned into c by the slope, plus the step not
+    taken), else the secant in logit c (the error: the partner's G over the secant's slope); formed when first read.
     ValueError where the guess puts c below ``C_SMALLEST``."""
     res = PLANE_LEVELS[level]
     theta = math.atan(mu * gamma)
-    c = stick_width_guess(theta, gamma)  # the guess table's inverse (~1e-3 in c), else the first-order law's
+    found = stick_width_guess(theta, gamma)
+    if found is not None and found[0] >= C_SMALLEST:
+        c, gap, guess = found
+        try:
+            last, slope, remaining = guided_steps(theta, c, gap, guess.slope,
+                                                  lambda c, gap: _given_c(c, gap, gamma, res, theta), lambda s: s.theta)
+        except SolverError:
+            last = None
+        if last is not None:
+            solution = plane_at_theta(last, theta)
+            fine = PlaneField(solution)
+
+            def estimate() -> float:
+                lay = solution.layout
+                shift = partner_shift_theta(lay.c, lay.gap, gamma, last, plane_partner(res))
+                return _gap_error(fine, abs(shift / slope) + remaining)
+
+            return PlaneSolve(fine, DeferredError(estimate), level)
+    c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]
     if c < C_SMALLEST:
         raise ValueError(f"mu = {mu:.6g} is too small at gamma = {gamma:.6g}: the stick half-width c ~ {c:.2g} lies "
                          f"below {C_SMALLEST:g}, outside the solver's range (first-order law: c ~ 4 exp(-pi gamma/(2 mu)))")
@@ -129,4 +186,5 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
     fine = PlaneField(solution)
     if not 0.0 < fine.c < 1.0:
         raise NoEigenvalueError(f"no stick width found for mu = {mu}, gamma = {gamma}")
-    return PlaneSolve(fine, _gap_error(fine, partner_shift_xi(theta, gamma, solution, plane_partner(res))), level)
+    return PlaneSolve(fine, DeferredError(lambda: _gap_error(fine, partner_shift_xi(theta, gamma, solution,
+                                                                                      plane_partner(res)))), level)

@@ -18,11 +18,20 @@ def test_the_readme_has_command_line_examples():
     assert EXAMPLES
 
 
+ESTIMATE = re.compile(r"(estimated error of c or mu: )([0-9.e+-]+)")
+
+
 @pytest.mark.parametrize("command, shown", EXAMPLES, ids=[c for c, _ in EXAMPLES])
 def test_command_prints_what_the_readme_shows(command, shown, capsys):
-    # printed to 6 significant digits from a level-2 solution (error ~1e-10): machine-independent
+    # printed to 6 (c: 10) significant digits from a level-2 solution (error ~1e-10): machine-independent, except the
+    # printed error estimate: the difference of two solutions a degree apart plus the guided step not taken (bounded
+    # by the theta scatter, THETA_SCATTER), both within a few rounding units of 1e-10, so its digits move with the BLAS
+    # and the CPU (measured 5.5e-11 ... 9.9e-11 for the cylinder example): it must lie within a factor 3 of the shown one
     assert main(shlex.split(command)[1:]) == 0
-    assert capsys.readouterr().out == shown
+    out = capsys.readouterr().out
+    assert ESTIMATE.sub(r"\1<estimate>", out) == ESTIMATE.sub(r"\1<estimate>", shown)
+    for printed, expected in zip(ESTIMATE.findall(out), ESTIMATE.findall(shown)):
+        assert float(expected[1]) / 3 <= float(printed[1]) <= 3 * float(expected[1]), (printed, expected)
 
 
 def test_the_table_excerpt_is_what_tables_prints():

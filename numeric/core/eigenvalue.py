@@ -258,12 +258,14 @@ Solved = TypeVar("Solved")
 
 
 def guided_steps(theta: float, c: float, gap: float, slope: float, solve: Callable[[float, float], Solved],
-                 theta_of: Callable[[Solved], float], max_steps: int = 8) -> tuple[Solved, float, float]:
+                 theta_of: Callable[[Solved], float], max_steps: int = 8,
+                 theta_noise: float = 0.0) -> tuple[Solved, float, float]:
     """Given-c solves ``solve(c, gap)`` at xi_k = logit c_k, stepped by xi_{k+1} = xi_k + (theta - theta(xi_k)) / slope
     (slope = d theta / d xi, the caller's first, then from the last two solves) until the next step would be below
-    STEP_TOLERANCE in xi, or once steps below 1e-8 stop shrinking (the small jumps of theta(xi) where the layout
-    changes, of the size of the discretisation error). Returns the last solve, the slope and the step not taken.
-    Raises SolverError if it does not settle."""
+    STEP_TOLERANCE in xi, or the solve's theta is within ``theta_noise`` (absolute) of theta (a step smaller than
+    the scatter of the given-c solve's theta moves c by noise), or once steps below 1e-8 stop shrinking (the small
+    jumps of theta(xi) where the layout changes, of the size of the discretisation error). Returns the last solve,
+    the slope and the step not taken. Raises SolverError if it does not settle."""
     xi = math.log(c) - math.log(gap)
     previous: tuple[float, float] | None = None
     last_step = math.inf
@@ -273,7 +275,8 @@ def guided_steps(theta: float, c: float, gap: float, slope: float, solve: Callab
         if previous is not None and found != previous[1] and xi != previous[0]:
             slope = (found - previous[1]) / (xi - previous[0])
         step = (theta - found) / slope
-        if abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step):
+        if (abs(step) <= STEP_TOLERANCE * max(1.0, abs(xi)) or abs(theta - found) <= theta_noise
+                or (abs(step) <= 1e-8 and abs(step) >= 0.25 * last_step)):
             return sol, slope, abs(step)
         previous, last_step = (xi, found), abs(step)
         xi += step

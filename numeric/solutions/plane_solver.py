@@ -44,7 +44,7 @@ from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "solve_given_c", "solve_given_mu",
-           "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA"]
+           "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA", "THETA_SCATTER"]
 
 #: Levels 0-4 (degree 12, 15, 18, 21, 24; h_beta times quadratics at c). Measured against degree 28
 #: (``tests/test_plane_solver.py``): mu to about 1e-8, 1e-9, 3e-11, 1e-11, 1e-11 (the last two at the rounding floor).
@@ -145,6 +145,11 @@ def _gap_error(fine: PlaneField, shift: float) -> float:
     return max(abs(fine.c * fine.gap * shift), ROUNDING_FLOOR * min(fine.c, fine.gap))
 
 
+#: Relative scatter of a given-c solve's theta (its rounding floor): measured 2e-11 ... 3e-11 over starts 1e-8 ... 1e-3
+#: away and one or two BLAS threads (nu = 0.45, c = 0.999; 5e-12 at nu = 0.3, c = 0.5), with a margin of 2. Given mu,
+#: the steps in logit c stop once theta is within it: a smaller step would move c by noise.
+THETA_SCATTER = 5e-11
+
 #: Stick widths below this are not solved for (the layout needs ~40 elements at 1e-5, and round-off grows like 1/c).
 C_SMALLEST = 1e-5
 
@@ -161,7 +166,8 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
         c, gap, guess = found
         try:
             last, slope, remaining = guided_steps(theta, c, gap, guess.slope,
-                                                  lambda c, gap: _given_c(c, gap, gamma, res, theta), lambda s: s.theta)
+                                                  lambda c, gap: _given_c(c, gap, gamma, res, theta), lambda s: s.theta,
+                                                  theta_noise=THETA_SCATTER * theta)
         except SolverError:
             last = None
         if last is not None:

@@ -19,6 +19,8 @@ Closed forms here:
 - first order in gamma: mu / gamma = K(c) / K'(c) (the 2-D (2.28)), its inverse
   c = theta_2(q)^2 / theta_3(q)^2 with the nome q = exp(-pi gamma / mu), and its limits
   c ~ 4 exp(-pi gamma / (2 mu)) (mu -> 0), 1 - c ~ 8 exp(-pi mu / gamma) (mu -> inf);
+- full inward slip (the limit c -> 0 away from the stick zone): p = (cos(pi alpha)/pi) (1 - x^2)^(alpha - 1/2) |x|^(-2 alpha),
+  q = mu sgn(x) p, tan(pi alpha) = mu gamma;
 - frictionless: Sadowsky's punch p = 1 / (pi sqrt(1 - x^2)), Hertz's cylinder p = (2/pi) sqrt(1 - x^2),
   P = pi a^2 E* / (4 R);
 - fully bonded (Abramov): p + i q = (cosh(pi eps)/pi) (1 - x)^(-1/2 - i eps) (1 + x)^(-1/2 + i eps),
@@ -46,7 +48,7 @@ from .materials import check_c, check_gamma, check_mu, check_nu, check_x
 
 __all__ = ["gamma_plane_stress", "bonded_index", "mu_over_gamma_plane", "mu_over_gamma_plane_mp",
            "stick_width_first_order", "stick_width_first_order_mp", "c_small_mu_plane", "gap_large_mu_plane",
-           "pressure_sadowsky", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction", "EXACT_RELATION"]
+           "pressure_sadowsky", "pressure_full_slip", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction", "EXACT_RELATION"]
 
 _THETA_TERMS = 12
 
@@ -173,6 +175,26 @@ def pressure_sadowsky(x: ArrayLike) -> np.ndarray | float:
     x_arr = np.abs(check_x(np.abs(x)))
     with np.errstate(divide="ignore"):
         return scalar_or_array(1.0 / (math.pi * np.sqrt((1.0 - x_arr) * (1.0 + x_arr))))
+
+
+def pressure_full_slip(x: ArrayLike, alpha: float) -> np.ndarray | float:
+    """Flat punch slipping inward at every x != 0: p = (cos(pi alpha)/pi) (1 - x^2)^(alpha - 1/2) |x|^(-2 alpha).
+
+    With q = mu sgn(x) p the normal relation H p + gamma q = 0 becomes the Carleman equation
+    H p + tan(pi alpha) sgn(x) p = 0 (tan(pi alpha) = mu gamma, 0 <= alpha < 1/2); this is its solution
+    bounded by |x|^(-2 alpha) at x = 0, normalised by int_{-1}^{1} p = B(1/2 - alpha, 1/2 + alpha) cos(pi alpha)/pi = 1.
+    It is the strip punch's pressure away from a stick zone that has shrunk to a point (c -> 0, small mu):
+    ``numeric.plane`` uses it below the solver's smallest c. alpha = 0: Sadowsky's punch.
+
+    >>> round(float(pressure_full_slip(0.5, 0.0)), 15) == round(float(pressure_sadowsky(0.5)), 15)
+    True
+    """
+    if not 0.0 <= alpha < 0.5:
+        raise ValueError(f"alpha (atan(mu gamma)/pi) must lie in [0, 1/2), got {alpha!r}")
+    x_arr = np.abs(check_x(np.abs(x)))
+    with np.errstate(divide="ignore"):
+        return scalar_or_array((math.cos(math.pi * alpha) / math.pi) * ((1.0 - x_arr) * (1.0 + x_arr)) ** (alpha - 0.5)
+                               * x_arr ** (-2.0 * alpha))
 
 
 def pressure_hertz_cylinder(x: ArrayLike) -> np.ndarray | float:

@@ -503,21 +503,31 @@ def _describe_line(s) -> str:
     what = f"cylinder, radius {_si(s.size, 'm')}" if s.shape == "cylinder" else f"strip punch, half-width {_si(s.size, 'm')}"
     reference = "Hertz" if s.shape == "cylinder" else "frictionless (Sadowsky)"
 
+    unresolved = "not resolved (c < 1e-5)"
+
     def at(value, where):
+        if value is None:
+            return unresolved
         return "infinite (at the edges)" if not math.isfinite(value) else f"{_si(value, 'Pa')} at x = {_si(where, 'm')}"
 
-    ratio = (lambda a, b: f"{a / b:.6g}" if math.isfinite(a) and math.isfinite(b) and b != 0.0 else "")
+    def ratio(a, b):
+        return f"{a / b:.6g}" if a is not None and math.isfinite(a) and math.isfinite(b) and b != 0.0 else ""
+
+    def slip(value):
+        if value is None:
+            return unresolved
+        return _si(value, "m") if s.shape == "strip" else f"{value:.6g} m/(N/m)"
     rows = [
         ("contact half-width a", _si(s.half_width, "m"), _si(s.frictionless_half_width, "m"),
          ratio(s.half_width, s.frictionless_half_width)),
         ("stick half-width c a", _si(s.stick_half_width, "m"), "0 m", ""),
-        ("centre pressure", _si(s.centre_pressure, "Pa"), _si(s.frictionless_centre_pressure, "Pa"),
+        ("centre pressure", at(s.centre_pressure, 0.0).split(" at x")[0], _si(s.frictionless_centre_pressure, "Pa"),
          ratio(s.centre_pressure, s.frictionless_centre_pressure)),
         ("max pressure", at(s.max_pressure, s.max_pressure_at), at(s.frictionless_max_pressure, 0.0),
          ratio(s.max_pressure, s.frictionless_max_pressure)),
         ("max shear", at(s.max_shear, s.max_shear_at), "0 Pa", ""),
         ("slip at x = a" if s.shape == "strip" else "slip rate du/dP at x = a",
-         _si(s.slip_edge, "m") if s.shape == "strip" else f"{s.slip_edge:.6g} m/(N/m)", "", ""),
+         slip(s.slip_edge), "", ""),
     ]
     width = max(len(r[1]) for r in rows) + 3
     lines = [f"{what}, {body}, on a half-space E = {_si(hs.E, 'Pa')}, nu = {hs.nu:g} (plane strain); mu = {s.mu:g}; "

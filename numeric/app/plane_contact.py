@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from numeric.app.contact import Elastic, MaterialPair, positive
+from numeric.solutions.plane_law import FullSlipField
 from numeric.solutions.plane_power_law import plane_power_law
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
@@ -39,7 +40,9 @@ class LineContact:
 
     ``frictionless_*`` are the values without friction (Hertz's cylinder; Sadowsky's strip, whose a is the same).
     ``slip_edge``: the slip at x = a (strip: m; cylinder: rate du/dP at x = a, m per N/m). The strip's pressure and
-    shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there."""
+    shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there. Below the solver's smallest stick
+    half-width (c < 1e-5, small mu: ``numeric.solutions.plane_law``) the values that depend on the neighbourhood of
+    the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None."""
 
     shape: str
     size: float
@@ -50,12 +53,12 @@ class LineContact:
     c: float
     half_width: float
     stick_half_width: float
-    max_pressure: float
-    max_pressure_at: float
-    centre_pressure: float
-    max_shear: float
-    max_shear_at: float
-    slip_edge: float
+    max_pressure: float | None
+    max_pressure_at: float | None
+    centre_pressure: float | None
+    max_shear: float | None
+    max_shear_at: float | None
+    slip_edge: float | None
     frictionless_half_width: float
     frictionless_max_pressure: float
     frictionless_centre_pressure: float
@@ -104,10 +107,13 @@ def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float
     a = math.sqrt(h.load_factor * R * P / M)
     a_h = math.sqrt(2.0 * R * P / (math.pi * M))
     scale = P / a
+    p_h = 2.0 * P / (math.pi * a_h)
+    if isinstance(h.flat.field, FullSlipField):  # the maxima lie in the unresolved neighbourhood of the stick zone
+        return LineContact("cylinder", R, pair, float(mu), P, pair.gamma, h.c, a, h.c * a, None, None, None, None, None,
+                           None, a_h, p_h, p_h, h.flat.error, h.flat.route)
     pmax, pmax_at = _maximum(h.pressure, h.c)
     qmax, qmax_at = _maximum(lambda x: np.asarray(h.shear(x)), h.c)
     slip = float(h.flat.slip(1.0)) / M
-    p_h = 2.0 * P / (math.pi * a_h)
     return LineContact("cylinder", R, pair, float(mu), P, pair.gamma, h.c, a, h.c * a, scale * pmax, pmax_at * a,
                        scale * float(h.pressure(0.0)), sign * scale * qmax, qmax_at * a, sign * slip, a_h, p_h, p_h,
                        h.flat.error, h.flat.route)
@@ -121,7 +127,9 @@ def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: floa
     pair, g, sign = _pair(half_space, indenter)
     s = strip_punch(gamma=g, mu=mu, level=level)
     scale = P / a
-    slip = float(s.slip(1.0)) * P / pair.modulus
-    return LineContact("strip", a, pair, float(mu), P, pair.gamma, s.c, a, s.c * a, math.inf, a,
-                       scale * float(s.pressure(0.0)), math.inf, a, sign * slip, a, math.inf, P / (math.pi * a),
-                       s.error, s.route)
+    if isinstance(s.field, FullSlipField):  # p(0) and the slip are not resolved below the solver's smallest c
+        centre, slip = None, None
+    else:
+        centre, slip = scale * float(s.pressure(0.0)), sign * float(s.slip(1.0)) * P / pair.modulus
+    return LineContact("strip", a, pair, float(mu), P, pair.gamma, s.c, a, s.c * a, math.inf, a, centre, math.inf, a,
+                       slip, a, math.inf, P / (math.pi * a), s.error, s.route)

@@ -37,6 +37,7 @@ from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_n
 
 from numeric.core.plane_fields import PlaneField, graded_both_ends, weighted_tail_integrals
+from numeric.solutions.plane_law import FullSlipField
 from numeric.solutions.plane_punch import StripPunchSolution, points, strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
 
@@ -111,7 +112,7 @@ class PlanePowerLawSolution:
         if isinstance(f, PlaneField):
             return weighted_tail_integrals(f, ax, lambda t, one_minus_t: t ** (-n))
         t, u, g = _edge_rule(ax)  # closed-form flat punch: t = 1 - u^2 on [x, 1]
-        p, q = f.edge_pressure_shear(u)
+        p, q = f.edge_pressure_shear(u, t)
         g = g * t ** (-n)
         return (g * p).sum(axis=1), (g * q).sum(axis=1)
 
@@ -119,6 +120,8 @@ class PlanePowerLawSolution:
         x_arr = points(x)
         ax = np.abs(x_arr).ravel()
         n = self.n
+        if isinstance(self.flat.field, FullSlipField):  # below the solver's smallest c: |x| >= 100 c only
+            self.flat.field.check(ax)
         p, q = np.zeros(ax.shape), np.zeros(ax.shape)
         inside = (ax > 0.0) & (ax < 1.0)
         if np.any(inside):
@@ -153,7 +156,7 @@ class PlanePowerLawSolution:
                                               lambda t, one_minus_t: load_weight(self.n, t, np.sqrt(one_minus_t)))
             return float(self.n / math.pi * tail[0])
         t, u, g = _edge_rule(np.zeros(1))
-        p, _ = f.edge_pressure_shear(u)
+        p, _ = f.edge_pressure_shear(u, t)
         return float(self.n / math.pi * np.sum(g * p * load_weight(self.n, t, u)))
 
     @property

@@ -27,11 +27,13 @@ from numpy.typing import ArrayLike
 
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_c, check_mu, check_nu, resolve_gamma
-from asymptotics.plane import bonded_traction, pressure_sadowsky
+from asymptotics.plane import bonded_traction, pressure_sadowsky, stick_width_first_order
 
 from numeric.core.errors import NoEigenvalueError
 from numeric.core.plane_fields import PlaneField
-from numeric.solutions.plane_solver import DEFAULT_LEVEL, PLANE_LEVELS, solve_given_c, solve_given_mu, solve_limit
+from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
+from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, PLANE_LEVELS, solve_given_c, solve_given_mu,
+                                            solve_limit)
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
@@ -61,8 +63,8 @@ class _Sadowsky:
     def slip(self, x: np.ndarray) -> np.ndarray:
         return -(self.gamma / math.pi) * np.arcsin(x)
 
-    def edge_pressure_shear(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """p, q at x = 1 - u^2, formed from u (1 - x would round next to the edge)."""
+    def edge_pressure_shear(self, u: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p, q at t = 1 - u^2, formed from u (1 - t would round next to the edge)."""
         return 1.0 / (math.pi * u * np.sqrt(2.0 - u * u)), np.zeros(u.shape)
 
 
@@ -79,8 +81,8 @@ class _Abramov:
     def slip(self, x: np.ndarray) -> np.ndarray:
         return np.zeros(x.shape)
 
-    def edge_pressure_shear(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """p, q at x = 1 - u^2, formed from u: 1 - x = u^2, 1 + x = 2 - u^2."""
+    def edge_pressure_shear(self, u: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p, q at t = 1 - u^2, formed from u: 1 - t = u^2, 1 + t = 2 - u^2."""
         eps = math.atanh(self.gamma) / math.pi
         w = (math.cosh(math.pi * eps) / math.pi) / (u * np.sqrt(2.0 - u * u)) * np.exp(
             1j * eps * (np.log(2.0 - u * u) - 2.0 * np.log(u)))
@@ -160,6 +162,26 @@ def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError
                               fine.residual, fine)
 
 
+#: Given mu, the law is asked whether c < C_SMALLEST where the first-order c is below this: the true c is below the
+#: first-order one (mu/mu_1 - 1 > 0), by a factor exp(-L gamma^2 r) >= exp(-0.5 L), so from here on it is above 1e-5.
+FIRST_ORDER_CHECK = 1e-2
+
+
+def _below_solver(mu: float, gamma: float, level: int) -> bool:
+    """Whether the stick width for mu lies below the solver's smallest (``C_SMALLEST``)."""
+    first_order = float(stick_width_first_order(mu, gamma))
+    if first_order >= FIRST_ORDER_CHECK:
+        return False
+    return first_order < C_SMALLEST or mu < law_friction_coefficient(C_SMALLEST, gamma, level)[0]
+
+
+def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
+    route = (f"law below the solver's smallest c ({C_SMALLEST:g}): mu = mu_1 (1 + gamma^2 (a + b/log(4/c)^2)) fitted "
+             f"to the solver; stresses of full slip at |x| >= 100 c; slip not computed"
+             + ("; c underflows to 0.0" if c == 0.0 else ""))
+    return StripPunchSolution(nu, gamma, mu, c, 1.0 - c, error, route, 0.0, FullSlipField(gamma, mu, c))
+
+
 def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: float | None = None,
                 c: float | None = None, level: int = DEFAULT_LEVEL) -> StripPunchSolution:
     """The flat strip punch with friction: give exactly one of ``mu`` and ``c``, and ``nu`` or ``gamma``.
@@ -185,6 +207,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
             return StripPunchSolution(nu, g, math.inf, 1.0, 0.0, 0.0, "full stick (Abramov)", 0.0, _Abramov(g))
         if g == 0.0:
             raise NoEigenvalueError("gamma = 0: shear and pressure decouple and every mu > 0 gives c = 1")
+        if c < C_SMALLEST:
+            mu, error = law_friction_coefficient(c, g, level)
+            return _from_law(nu, g, mu, c, error)
         solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = float(check_mu(mu))
@@ -192,6 +217,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         return StripPunchSolution(nu, g, 0.0, 0.0, 1.0, 0.0, "frictionless (Sadowsky)", 0.0, _Sadowsky(g))
     if mu == math.inf or g == 0.0:
         return StripPunchSolution(nu, g, mu, 1.0, 0.0, 0.0, "full stick (Abramov)", 0.0, _Abramov(g))
+    if _below_solver(mu, g, level):
+        c, error = law_stick_width(mu, g, level)
+        return _from_law(nu, g, mu, c, error)
     solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 

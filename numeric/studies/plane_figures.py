@@ -38,19 +38,15 @@ def _curve(panel: str, model: str, x, y, **params: float) -> Curve:
 
 
 def plane_stick_width_data() -> FigureData:
-    """c(mu) of the strip punch (every power law) for nu = 0.3, 0, -1/2: solver, first-order law, c_max."""
+    """c(mu) of the strip punch (every power law) for nu = 0.3, 0, -1/2: the full solution (below c = 1e-5 the law
+    fitted to the solver, ``numeric.solutions.plane_law``), the first-order law, c_max."""
     curves = []
     mus = np.geomspace(0.1, 30.0, 25)
     for nu in NUS:
         g = float(gamma_from_nu(nu))
         c_max = plane_slip_limit(nu).c
-        solved = []
-        for m in mus:
-            try:
-                solved.append((m, strip_punch(nu=nu, mu=float(m)).c))
-            except ValueError:  # c below 1e-5 (small mu at large gamma): not solved for
-                continue
-        curves.append(_curve("c(mu)", "solver", [m for m, _ in solved], [c for _, c in solved], nu=nu))
+        solved = [strip_punch(nu=nu, mu=float(m)).c for m in mus]  # below c = 1e-5 the law fitted to the solver
+        curves.append(_curve("c(mu)", "full solution", mus, solved, nu=nu))
         curves.append(_curve("c(mu)", "first order", mus, np.asarray(stick_width_first_order(mus, g)), nu=nu))
         curves.append(_curve("c(mu)", "c_max", [mus[0], mus[-1]], [c_max, c_max], nu=nu))
     return FigureData("plane_stick_width", "Stick half-width c/a of the strip punch and the cylinder against mu: the "
@@ -95,8 +91,8 @@ def plot_plane_figure(data: FigureData):
             value = key.get("nu", key.get("mu", 0.0))
             index = (NUS.index(value) if "nu" in key else (0, *MUS).index(value))
             colour = colours(index / 3.0)
-            style = {"solver": "-", "first order": "--", "c_max": ":"}[cv.model]
-            label = f"{'nu' if 'nu' in key else 'mu'} = {value:g}" if cv.model == "solver" else None
+            style = {"solver": "-", "full solution": "-", "first order": "--", "c_max": ":"}[cv.model]
+            label = f"{'nu' if 'nu' in key else 'mu'} = {value:g}" if style == "-" else None
             ax.plot(cv.x, cv.y, style, color=colour, label=label, lw=1.2)
         ax.set_xlabel(xq)
         ax.set_ylabel(yq)

@@ -17,7 +17,8 @@ from asymptotics import plane as closed
 from numeric import plane
 from numeric.core.errors import NoEigenvalueError
 from numeric.core.linear_algebra import equilibrate
-from numeric.core.plane_cauchy import HBETA, PLAIN, POWER, Family, family_cauchy, mode_cauchy
+from numeric.core.plane_cauchy import (HBETA, PLAIN, POWER, Family, family_cauchy, hbeta_moments, mode_cauchy, power_moments,
+                                       product_rule)
 from numeric.core.plane_charts import PlaneResolution
 from numeric.core.plane_eigenvalue import plane_given_c
 from numeric.core.plane_fields import PlaneField, graded_both_ends
@@ -66,6 +67,27 @@ def test_element_transforms_against_mpmath(family):
         for j in sorted({0, family.degree}):
             ref = float(_cauchy_mp(family.kind, family.parameter, j, yi))
             assert abs(got[i, j] - ref) <= 2e-14 * max(1.0, abs(ref)), (family, yi, j)
+
+
+def test_moments_and_product_rule_against_mpmath():
+    # int_0^1 w P_m(2s - 1) for s^lam and h_beta, m < 52, by 30-digit quadrature: each moment is a product of m + 1
+    # rounded ratios, so within (2 m + 4) ulp relative: 2.6e-14 at m = 51 (bound 3e-14)
+    with mpmath.workdps(30):
+        for kind, parameter in ((POWER, -0.5), (POWER, -0.1), (POWER, 0.3), (HBETA, 0.5), (HBETA, 1e-4), (HBETA, 0.0)):
+            got = (power_moments if kind == POWER else hbeta_moments)(parameter, 52)
+            for m in (0, 1, 2, 7, 30, 51):
+                ref = mpmath.quad(lambda s: _weight_mp(kind, parameter, s) * mpmath.legendre(m, 2 * s - 1),
+                                  [0] + [mpmath.mpf(2) ** -k for k in range(40, 0, -1)] + [1])
+                assert abs(got[m] - float(ref)) <= 3e-14 * abs(float(ref)), (kind, parameter, m)
+        # the product rule: exact on w times a polynomial of degree n - 1 (P_35 here: to the rounding of 36 terms,
+        # 36 ulp x sum |w_i P_35(s_i)| <= 36 x 1.1e-16 x 2 = 8e-15; measured 2.2e-15), and int s^(-1/2) / (s + 0.6)
+        # (pole at rho = 4.16: 4.16^-36 = 6e-23) to the rounding of the weights (1.2e-15 relative measured with the
+        # Christoffel weights, 3e-14 with leggauss's; bound 4e-15)
+        s, w = product_rule(power_moments(-0.5, 36))
+        ref = mpmath.quad(lambda t: t ** -0.5 * mpmath.legendre(35, 2 * t - 1), [0, 1e-12, 1e-6, 1e-2, 0.5, 1])
+        assert abs(w @ np.polynomial.legendre.legval(2 * s - 1, [0] * 35 + [1]) - float(ref)) <= 8e-15
+        ref = mpmath.quad(lambda t: t ** -0.5 / (t + mpmath.mpf("0.6")), [0, 1e-12, 1e-6, 1e-2, 0.5, 1])
+        assert abs(w @ (1.0 / (s + 0.6)) - float(ref)) <= 4e-15 * abs(float(ref))
 
 
 def test_mode_transform_against_hypergeometric_closed_form():

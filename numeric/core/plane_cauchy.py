@@ -22,11 +22,15 @@ difference D_j = (P_j(s) - P_j(y))/(s - y) (a polynomial, by its own recurrence)
 in closed form (``power_cauchy``, ``hbeta_cauchy``); points outside but within ``FAR`` of the element,
 a fixed composite rule graded toward the near end (pieces of ratio 1/2, so a pole at distance d from an
 end is at least three half-lengths from the centre of every piece longer than d: Gauss error 5.83^-(2n));
-points beyond ``FAR``, the kernel interpolated at ``CHEBYSHEV_POINTS`` Chebyshev points
-and the moments of the basis against the Lagrange polynomials, once per family.
+points beyond ``FAR``, the family's product rule of degree + ``FAR_NODES`` nodes.
 
-Accuracy (``tests/test_plane_cauchy.py``, against 30-digit mpmath): 1e-15 of max(1, |I_j|) at points
-from 1e-12 of an element end to 100 element lengths away, for K <= 20 and every beta, lam in range.
+Every rule against the weight w is a product rule (``product_rule``): fixed Gauss-Legendre nodes, weights from
+the moments of w against P_m in closed form (``power_moments``, ``hbeta_moments``), so nothing but a few weights
+depends on the exponent (no Gauss-Jacobi eigenproblem per exponent).
+
+Accuracy (``tests/test_plane.py``, ``test_element_transforms_against_mpmath``, against 30-digit mpmath): within
+2e-14 of max(1, |I_j|) at points from 1e-9 of an element end to 30 element lengths away, for K <= 18 and beta, lam
+over their range (measured worst 2e-14, in the Legendre recurrences at degree 18).
 
 References
 ----------
@@ -41,22 +45,25 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy import linalg, special
+from scipy import special
 
+from numeric.core.abel_rules import gauss01
 from numeric.core.charts import h_beta
 from numeric.core.quadrature import gauss_legendre
 
-__all__ = ["PLAIN", "HBETA", "POWER", "Family", "FAR", "CHEBYSHEV_POINTS", "FORWARD_GROWTH", "legendre_q01",
-           "legendre01", "gauss_jacobi01", "power_cauchy", "hbeta_cauchy", "family_weight", "family_cauchy",
+__all__ = ["PLAIN", "HBETA", "POWER", "Family", "FAR", "FAR_NODES", "FORWARD_GROWTH", "legendre_q01",
+           "legendre01", "power_moments", "hbeta_moments", "product_rule", "power_cauchy", "hbeta_cauchy", "family_weight", "family_cauchy",
            "family_integrals", "family_values", "mode_cauchy"]
 
 PLAIN, HBETA, POWER = 0, 1, 2
 """Weights of a family: 1, h_beta(s), s^lam."""
 
 FAR = 0.5
-"""Points farther than this (in element lengths) from an element: interpolated kernel (error 3.7^-(2 x 16))."""
-CHEBYSHEV_POINTS = 34
-"""Chebyshev points of the interpolated kernel 1/(s - y), |y - [0,1]| >= FAR (rho >= 2 + sqrt 3)."""
+"""Points farther than this (in element lengths) from an element: the family's lean rule (``FAR_NODES``)."""
+FAR_NODES = 34
+"""Nodes of the lean rule beyond the degree: for |y - [0, 1]| >= FAR the pole of P_j(2s - 1)/(s - y) is at
+rho >= 2 + sqrt 3, and the product rule of degree + FAR_NODES - 1 leaves P_j(y) rho^-(degree + FAR_NODES) <= 3.73^-34
+= 4e-20."""
 FORWARD_GROWTH = 30.0
 """Forward recurrence of Q_j off the cut while rho^(2K) stays below this (a relative loss of 30 ulp at worst)."""
 _PIECES = 60  # graded pieces toward an end: poles down to 2^-60 ~ 1e-18 of the element length
@@ -133,28 +140,49 @@ def _miller(eta: np.ndarray, k: int, m: int, q0: np.ndarray) -> np.ndarray:
     return np.cumprod(ratios, axis=-1)
 
 
-@lru_cache(maxsize=256)
-def gauss_jacobi01(n: int, lam: float) -> tuple[np.ndarray, np.ndarray]:
-    """n-point Gauss rule on [0, 1] for the weight s^lam (lam > -1): nodes, weights (read-only).
+def power_moments(lam: float, n: int) -> np.ndarray:
+    """int_0^1 s^lam P_m(2 s - 1) ds, m < n (lam > -1): Gamma(lam + 1)^2 / (Gamma(lam + m + 2) Gamma(lam + 1 - m)),
+    by the ratio (lam - m + 1)/(lam + m + 1) of successive moments (a rounding each)."""
+    ratios = np.ones(n)
+    m = np.arange(1, n, dtype=float)
+    ratios[1:] = (lam - m + 1.0) / (lam + m + 1.0)
+    return np.cumprod(ratios) / (lam + 1.0)
 
-    Golub-Welsch on the Jacobi matrix of the weight (1 + x)^lam on [-1, 1] (scipy's eigh_tridiagonal): the
-    moments int s^(lam + k), k < 2n, come out to 2e-14 relative at n = 60 (``roots_jacobi``: 2e-13)."""
-    if lam == 0.0:
-        x, w = gauss_legendre(n)
-        s, ws = 0.5 * (x + 1.0), 0.5 * w
-    else:
-        k = np.arange(n, dtype=float)
-        ab = k * 2.0 + lam
-        diag = np.where(k == 0, lam / (lam + 2.0), lam * lam / np.where(k == 0, 1.0, ab * (ab + 2.0)))
-        m = np.arange(1, n, dtype=float)
-        abm = 2.0 * m + lam
-        off = np.sqrt(4.0 * m * m * (m + lam) ** 2 / (abm**2 * (abm + 1.0) * (abm - 1.0)))
-        x, vectors = linalg.eigh_tridiagonal(diag, off)
-        s, ws = 0.5 * (x + 1.0), vectors[0] ** 2 / (lam + 1.0)
-    s, ws = np.array(s), np.array(ws)
-    s.setflags(write=False)
-    ws.setflags(write=False)
-    return s, ws
+
+def hbeta_moments(beta: float, n: int) -> np.ndarray:
+    """int_0^1 h_beta(s) P_m(2 s - 1) ds, m < n (0 <= beta <= 1/2): -1/(beta + 1), then ``power_moments`` / beta with
+    its factor beta cancelled, 1/((beta + 1)(beta + 2)) prod_(2 <= k <= m) (beta - k + 1)/(beta + k + 1): smooth down to
+    beta = 0 (the moments of log s)."""
+    ratios = np.ones(n)
+    ratios[0] = -1.0 / (beta + 1.0)
+    if n > 1:
+        ratios[1] = -1.0 / (beta + 2.0)
+        m = np.arange(2, n, dtype=float)
+        ratios[2:] = (beta - m + 1.0) / (beta + m + 1.0)
+    return np.cumprod(ratios)
+
+
+@lru_cache(maxsize=None)
+def _projector(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """n-point Gauss-Legendre nodes s on [0, 1] and A[i, m] = w_i (2 m + 1) P_m(2 s_i - 1), m < n (read-only; A[:, 0]
+    are the weights). The weights as the Christoffel function 1/sum_m (2 m + 1) P_m(2 s_i - 1)^2 (a sum of positive
+    terms at the rounded node: 1e-13 relative, where ``leggauss``'s are off by 4e-13 at the end nodes, which a weight
+    singular there multiplies: 7e-14 in int s^(-1/2)/(s + 0.6) with 36 nodes, against 9e-16)."""
+    s = gauss01(n)[0]
+    a = (2.0 * np.arange(n) + 1.0)[None, :] * legendre01(n - 1, s)
+    a *= (1.0 / (a * legendre01(n - 1, s)).sum(axis=1))[:, None]
+    a.setflags(write=False)
+    return s, a
+
+
+def product_rule(moments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes and weights of int_0^1 w(s) f(s) ds ~ sum W_i f(s_i), exact for polynomials f of degree < n, from the n
+    moments int w P_m(2 s - 1) (``power_moments``, ``hbeta_moments``): the n Gauss-Legendre nodes, whatever w (so a
+    kernel at them does not depend on the weight's exponent), W = A @ moments (the Legendre coefficients of the degree
+    n - 1 interpolant of f, (2 m + 1) sum_i w_i f(s_i) P_m, are exact). Error for f analytic in the Bernstein ellipse
+    rho: ~rho^-n (Gauss-Jacobi's rho^-2n with half the nodes; the nodes are cheaper than an eigenproblem per weight)."""
+    s, a = _projector(moments.size)
+    return s, a @ moments
 
 
 def _pi_cot(lam: float) -> float:
@@ -216,8 +244,9 @@ def power_cauchy(lam: float, y: np.ndarray) -> np.ndarray:
     |y| <= 1/2: V = A(y) - sum_k y^k / (k - lam) (the tail int_1^inf s^lam / (s - y), continued
     analytically in lam), A = -pi cot(pi lam) y^lam (y > 0) or -pi |y|^lam / sin(pi lam) (y < 0),
     the k = 0 term combined with A so that lam -> 0 (log|y| in the limit) loses nothing.
-    y > 1/2: [0, 1/4] by Gauss-Jacobi, [1/4, 1] as int (s^lam - y^lam)/(s - y) + y^lam log|(1 - y)/(1/4 - y)|.
-    y < -1/2: Gauss-Jacobi on [0, 1] (the pole is >= 1/2 away).
+    y > 1/2: [0, 1/4] by the product rule of s^lam (30 nodes, pole at rho >= 5.83: 5.83^-30 = 1e-23), [1/4, 1] as
+    int (s^lam - y^lam)/(s - y) + y^lam log|(1 - y)/(1/4 - y)|.
+    y < -1/2: the product rule on [0, 1] (40 nodes; the pole is >= 1/2 away, rho >= 3.73: 3.73^-40 = 1e-23).
     """
     y = np.asarray(y, dtype=float)
     if lam == 0.0:
@@ -238,7 +267,7 @@ def power_cauchy(lam: float, y: np.ndarray) -> np.ndarray:
     right = y > 0.5
     if np.any(right):
         yr = y[right]
-        s1, w1 = gauss_jacobi01(30, lam)
+        s1, w1 = product_rule(power_moments(lam, 30))
         part1 = (0.25 ** (lam + 1.0)) * ((w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1))
         s2, w2 = _quarter_to_one()
         log_ratio = np.log(s2[None, :] / yr[:, None])
@@ -247,7 +276,7 @@ def power_cauchy(lam: float, y: np.ndarray) -> np.ndarray:
         out[right] = part1 + dd @ w2 + yr**lam * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
     left = y < -0.5
     if np.any(left):
-        s, w = gauss_jacobi01(40, lam)
+        s, w = product_rule(power_moments(lam, 40))
         out[left] = (w[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
     return out
 
@@ -258,8 +287,9 @@ def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
     (V_beta - V_0)/beta of ``power_cauchy``, arranged so that nothing cancels as beta -> 0:
     0 < |y| <= 1/2: W = g y^beta - log(y)^2 E(beta log|y|) - sum_k y^k / (k (k - beta)), with
     g = (1/beta - pi cot(pi beta))/beta (y > 0) or (1/beta - pi/sin(pi beta))/beta (y < 0) and
-    E(z) = (e^z - 1 - z)/z^2; y > 1/2: [0, 1/4] by a rule graded toward 0, [1/4, 1] by subtracting h_beta(y)
-    (the divided difference y^beta log(s/y) exprel(beta log(s/y)) / (s - y)); y < -1/2: the graded rule.
+    E(z) = (e^z - 1 - z)/z^2; y > 1/2: [0, 1/4] by the product rule of h_beta (30 nodes, as in ``power_cauchy``),
+    [1/4, 1] by subtracting h_beta(y) (the divided difference y^beta log(s/y) exprel(beta log(s/y)) / (s - y));
+    y < -1/2: the product rule (40 nodes).
     """
     y = np.asarray(y, dtype=float)
     out = np.empty(y.shape)
@@ -273,9 +303,9 @@ def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
     right = y > 0.5
     if np.any(right):
         yr = y[right]
-        s1, w1 = _graded_toward_zero(_HBETA_PIECES)
-        s1, w1 = 0.25 * s1, 0.25 * w1
-        part1 = (w1 * h_beta(beta, s1))[None, :] @ (1.0 / (s1[:, None] - yr[None, :]))
+        u, wh = product_rule(hbeta_moments(beta, 30))  # h_beta(u/4) = 4^-beta h_beta(u) + h_beta(1/4)
+        w1 = 0.25 * (0.25**beta * wh + float(h_beta(beta, np.array(0.25))) * _projector(30)[1][:, 0])
+        part1 = w1[None, :] @ (1.0 / (0.25 * u[:, None] - yr[None, :]))
         s2, w2 = _quarter_to_one()
         log_ratio = np.log(s2[None, :] / yr[:, None])
         dd = yr[:, None] ** beta * log_ratio * special.exprel(beta * log_ratio) / (s2[None, :] - yr[:, None])
@@ -283,8 +313,8 @@ def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
         out[right] = part1[0] + dd @ w2 + h_beta(beta, yr) * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
     left = y < -0.5
     if np.any(left):
-        s, w = _graded_toward_zero(_HBETA_PIECES)
-        out[left] = ((w * h_beta(beta, s))[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
+        s, w = product_rule(hbeta_moments(beta, 40))
+        out[left] = (w[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
     return out
 
 
@@ -314,7 +344,7 @@ def mode_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
     right = y > 0.5
     if np.any(right):
         yr = y[right]
-        s1, w1 = gauss_jacobi01(30, beta)
+        s1, w1 = product_rule(power_moments(beta, 30))
         inner = 0.25 ** (beta + 1.0) * (w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1)
         part1 = (beta / yr) * inner - 0.25**beta / yr
         s2, w2 = _quarter_to_one()
@@ -326,7 +356,7 @@ def mode_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
     left = y < -0.5
     if np.any(left):
         yl = y[left]
-        s, w = gauss_jacobi01(40, beta)
+        s, w = product_rule(power_moments(beta, 40))
         out[left] = (beta / yl) * (w[None, :] / (s[None, :] - yl[:, None])).sum(axis=1) - 1.0 / yl
     return out
 
@@ -374,81 +404,74 @@ def family_values(family: Family, s: np.ndarray) -> np.ndarray:
     return family_weight(family, s)[..., None] * legendre01(family.degree, s)
 
 
-@lru_cache(maxsize=256)
-def _lean_rule(family: Family) -> tuple[np.ndarray, np.ndarray]:
-    """Nodes and weights (w folded in) that integrate w(s) x polynomials of degree <= degree + 2 CHEBYSHEV_POINTS."""
-    n = family.degree // 2 + CHEBYSHEV_POINTS + 2
-    if family.kind == PLAIN:
-        s, ws = gauss_jacobi01(n, 0.0)
-        return s, ws
+def _family_moments(family: Family, n: int) -> np.ndarray:
+    """int_0^1 w(s) P_m(2 s - 1) ds, m < n (closed forms)."""
     if family.kind == POWER:
-        return gauss_jacobi01(n, family.parameter)
-    s, ws = _graded_toward_zero(_HBETA_PIECES, 12)
-    return s, ws * h_beta(family.parameter, s)
-
-
-@lru_cache(maxsize=None)
-def _chebyshev01(r: int = CHEBYSHEV_POINTS) -> tuple[np.ndarray, np.ndarray]:
-    """Chebyshev points of the first kind on [0, 1] and their barycentric weights."""
-    k = np.arange(r)
-    theta = (2 * k + 1) * math.pi / (2 * r)
-    s = 0.5 * (1.0 - np.cos(theta))
-    bary = (-1.0) ** k * np.sin(theta)
-    s.setflags(write=False)
-    bary.setflags(write=False)
-    return s, bary
-
-
-@lru_cache(maxsize=64)
-def _lagrange_legendre(nodes: tuple[float, ...] | int, degree: int) -> tuple[np.ndarray, np.ndarray]:
-    """At the nodes of a rule: the Lagrange polynomials of the Chebyshev points (nodes, r) and P_0..P_degree."""
-    s = _graded_toward_zero(_HBETA_PIECES, 12)[0] if isinstance(nodes, int) else np.array(nodes)
-    xk, bary = _chebyshev01()
-    terms = bary[None, :] / (s[:, None] - xk[None, :])
-    return terms / terms.sum(axis=1, keepdims=True), legendre01(degree, s)
-
-
-@lru_cache(maxsize=256)
-def _moments(family: Family) -> np.ndarray:
-    """M[i, j] = int_0^1 l_i(s) w(s) P_j(2s - 1) ds for the Lagrange polynomials l_i of the Chebyshev points (the
-    h_beta rule's nodes do not depend on beta: their Lagrange and Legendre values are kept)."""
-    s, ws = _lean_rule(family)
-    lagrange, legendre = _lagrange_legendre(0 if family.kind == HBETA else tuple(s), family.degree)
-    out = (lagrange * ws[:, None]).T @ legendre
-    out.setflags(write=False)
+        return power_moments(family.parameter, n)
+    if family.kind == HBETA:
+        return hbeta_moments(family.parameter, n)
+    out = np.zeros(n)
+    out[0] = 1.0
     return out
 
 
-@lru_cache(maxsize=256)
+def _lean_rule(family: Family) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes (Gauss-Legendre, whatever the family's parameter) and weights (w folded in) that integrate w(s) x
+    polynomials of degree < degree + FAR_NODES exactly (``product_rule``)."""
+    return product_rule(_family_moments(family, family.degree + FAR_NODES))
+
+
+@lru_cache(maxsize=None)
+def _lean_legendre(degree: int) -> np.ndarray:
+    """P_0..P_degree at the lean rule's nodes (read-only)."""
+    return _frozen(legendre01(degree, _projector(degree + FAR_NODES)[0]))
+
+
+@lru_cache(maxsize=None)
+def _outside_nodes(kind: int, degree: int, toward_one: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The nodes of ``_outside_rule`` (they do not depend on the family's parameter): s, their distance d from the near
+    end (exact), the weights without w (0 on the nodes whose weight ``_outside_rule`` forms whole) and the Legendre
+    values (read-only)."""
+    if not toward_one:
+        s, ws = _graded_toward_zero(_PIECES if kind != HBETA else _HBETA_PIECES, extra=degree // 2 + 1)
+        if kind == POWER:
+            u = _projector(2 * _PIECE_NODES)[0]
+            s, ws = np.concatenate([2.0 ** -_PIECES * u, s]), np.concatenate([np.zeros(u.size), ws])
+        d = s
+    else:
+        s0 = 0.5 * _projector(degree + FAR_NODES)[0]
+        t, wt = _graded_toward_zero(_PIECES, extra=degree // 2 + 2)
+        keep = t < 0.5  # pieces [2^-(j+1), 2^-j] for j >= 1, mapped to 1 - t
+        s = np.concatenate([s0, 1.0 - t[keep]])
+        d = np.concatenate([1.0 - s0, t[keep]])
+        ws = np.concatenate([np.zeros(s0.size), wt[keep]])
+    return _frozen(s), _frozen(d), _frozen(ws), _frozen(legendre01(degree, s))
+
+
 def _outside_rule(family: Family, toward_one: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Fixed nodes s, their distance d from the near end (exact), weights (w folded in) and the Legendre values,
     for points outside the element within FAR of an end.
 
     Toward 0 (the weight's end): pieces [2^-(j+1), 2^-j] (j < 66 for h_beta, 60 otherwise), and for ``POWER``
-    the innermost [0, 2^-60] by Gauss-Jacobi (``HBETA``'s innermost piece is ``_innermost_hbeta``). Toward 1:
-    the family's lean rule on [0, 1/2] (the pole is >= 1/2 away) and pieces [1 - 2^-j, 1 - 2^-(j+1)], j >= 1,
-    their distance 2^-(j+1) ... 2^-j from 1 kept exact (a double s next to 1 would round it)."""
+    the innermost [0, h], h = 2^-60, by the product rule of s^lam (20 nodes: a pole at least h away, rho >= 5.83,
+    5.83^-20 = 5e-16 of that piece; ``HBETA``'s innermost piece is ``_innermost_hbeta``). Toward 1: the family's lean
+    rule on [0, 1/2] (the pole is >= 1/2 away: rho >= 5.83 in u = 2 s; w(u/2) is 2^-lam u^lam, or 2^-beta h_beta(u) +
+    h_beta(1/2)) and pieces [1 - 2^-j, 1 - 2^-(j+1)], j >= 1, their distance 2^-(j+1) ... 2^-j from 1 kept exact (a
+    double s next to 1 would round it)."""
+    s, d, ws, P = _outside_nodes(family.kind, family.degree, toward_one)
+    ws = ws * family_weight(family, s)
+    lam = family.parameter
     if not toward_one:
-        s, ws = _graded_toward_zero(_PIECES if family.kind != HBETA else _HBETA_PIECES, extra=family.degree // 2 + 1)
-        ws = ws * family_weight(family, s)
         if family.kind == POWER:
-            sj, wj = gauss_jacobi01(_PIECE_NODES, family.parameter)
-            h = 2.0 ** -_PIECES
-            s, ws = np.concatenate([h * sj, s]), np.concatenate([h ** (family.parameter + 1.0) * wj, ws])
-        d = s
+            n = 2 * _PIECE_NODES
+            ws[:n] = 2.0 ** (-_PIECES * (lam + 1.0)) * product_rule(power_moments(lam, n))[1]
     else:
+        n = family.degree + FAR_NODES
         if family.kind == HBETA:
-            u, wu = _graded_toward_zero(_HBETA_PIECES, 12)
-            s0, w0 = 0.5 * u, 0.5 * wu * h_beta(family.parameter, 0.5 * u)
+            ws[:n] = 0.5 * (0.5**lam * _lean_rule(family)[1] + float(h_beta(lam, np.array(0.5))) * _projector(n)[1][:, 0])
         else:
-            u, wu = _lean_rule(family)
-            s0, w0 = 0.5 * u, wu * 0.5 ** ((family.parameter if family.kind == POWER else 0.0) + 1.0)
-        t, wt = _graded_toward_zero(_PIECES, extra=family.degree // 2 + 2)
-        keep = t < 0.5  # pieces [2^-(j+1), 2^-j] for j >= 1, mapped to 1 - t
-        s = np.concatenate([s0, 1.0 - t[keep]])
-        d = np.concatenate([1.0 - s0, t[keep]])
-        ws = np.concatenate([w0, wt[keep] * family_weight(family, 1.0 - t[keep])])
-    return _frozen(s), _frozen(d), _frozen(ws), _frozen(legendre01(family.degree, s))
+            ws[:n] = _lean_rule(family)[1] * 0.5 ** ((lam if family.kind == POWER else 0.0) + 1.0)
+    return s, d, ws, P
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:
@@ -491,15 +514,11 @@ def family_cauchy(family: Family, y: np.ndarray) -> np.ndarray:
     inside = (y > 0.0) & (y < 1.0)
     far = (y < -FAR) | (y > 1.0 + FAR)
     if np.any(far):
-        xk, bary = _chebyshev01()
-        out[far] = (1.0 / (xk[None, :] - y[far][:, None])) @ _moments(family)
+        s, ws = _lean_rule(family)
+        out[far] = (1.0 / (s[None, :] - y[far][:, None])) @ (ws[:, None] * _lean_legendre(k))
     if np.any(inside):
         yi = y[inside]
-        if family.kind == POWER:  # D_j has degree j - 1: exact
-            s, ws = gauss_jacobi01(k // 2 + 2, family.parameter)
-        else:
-            s, ws = _graded_toward_zero(_HBETA_PIECES)
-            ws = ws * h_beta(family.parameter, s)
+        s, ws = product_rule(_family_moments(family, k + 1))  # D_j has degree j - 1: exact
         Py = legendre01(k, yi)
         D = _divided_differences(k, s[None, :], yi[:, None], Py[:, None, :])
         V = power_cauchy(family.parameter, yi) if family.kind == POWER else hbeta_cauchy(family.parameter, yi)
@@ -518,6 +537,5 @@ def family_cauchy(family: Family, y: np.ndarray) -> np.ndarray:
 
 
 def family_integrals(family: Family) -> np.ndarray:
-    """int_0^1 w(s) P_j(2 s - 1) ds, j = 0 .. degree."""
-    s, ws = _lean_rule(family)
-    return ws @ legendre01(family.degree, s)
+    """int_0^1 w(s) P_j(2 s - 1) ds, j = 0 .. degree (closed forms: ``power_moments``, ``hbeta_moments``)."""
+    return _family_moments(family, family.degree + 1)

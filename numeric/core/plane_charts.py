@@ -27,7 +27,7 @@ Near-redundancy: h_beta(s) s^k is approximated by polynomials of degree K to abo
 singular family of high degree next to a Legendre series of degree K makes the basis (and the system)
 numerically rank deficient (the previous layout's 4-6 singular functions: smallest singular value of the
 equilibrated matrix 1e-16 of the largest). ``singular_degree`` stays at 2-3 here, as in the axisymmetric
-solver, and ``tests/test_plane_solver.py`` checks the condition of the system.
+solver, and ``tests/test_plane.py`` (``test_the_system_is_not_singular``) checks the condition of the system.
 
 References
 ----------
@@ -69,7 +69,7 @@ class PlaneResolution:
     grading: float = 2.0
 
 
-#: Levels 0-4, coarse to fine (level 2 the default; ``tests/test_plane_solver.py`` measures them).
+#: Levels 0-4, coarse to fine (level 2 the default).
 PLANE_RESOLUTIONS: tuple[PlaneResolution, ...] = (
     PlaneResolution(degree=8, singular_degree=2),
     PlaneResolution(degree=10, singular_degree=2),

@@ -30,12 +30,14 @@ from numeric.core.plane_eigenvalue import PlaneEigensolution
 from numeric.core.plane_operators import PlaneOperators, normal_factor
 from numeric.core.quadrature import gauss_legendre
 
-__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "graded_both_ends", "weighted_tail_integrals"]
+__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "NODE_CLEARANCE", "graded_both_ends", "weighted_tail_integrals"]
 
 SLIP_PIECES = 50
 """Graded pieces toward each end of [c, x] in the slip integral (down to 2^-50 of its length)."""
 SLIP_NODES = 12
 """Gauss nodes per piece (the pieces see the end singularities at >= 3 half-lengths: 5.83^-24)."""
+NODE_CLEARANCE = 1e-13
+"""Least distance of a slip-integral node from an element end inside the slip zone (see ``PlaneField.slip``)."""
 
 
 class PlaneField:
@@ -124,8 +126,19 @@ class PlaneField:
             nodes = self.c + length[:, None] * s[None, :]
             # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
             from_one = (ax[outer] - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
+            # nodes that round to c go to its slip side; nodes next to an element end inside the slip zone (single
+            # basis functions' transforms are logarithmic there, and where the chart's anchor changes from c to 1 the
+            # chart value of a node a few ulp off the end rounds to the end itself: u came out NaN at x = (1 + c)/2
+            # and at other ends) move to NODE_CLEARANCE from the end on their own side, t - 1 with them (the strain
+            # is smooth across such an end, so the integral moves by ~1e-13 times its weight there)
+            nodes = np.where(nodes == self.c, np.nextafter(self.c, 2.0), nodes)
             ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
-            nodes = np.where(np.isin(nodes, ends), np.nextafter(nodes, 2.0), nodes)
+            ends = ends[(ends > self.c) & (ends < 1.0)]
+            if ends.size:
+                nearest = ends[np.abs(nodes[..., None] - ends).argmin(axis=-1)]
+                shift = np.where(nodes >= nearest, NODE_CLEARANCE, -NODE_CLEARANCE) - (nodes - nearest)
+                shift = np.where(np.abs(nodes - nearest) < NODE_CLEARANCE, shift, 0.0)
+                nodes, from_one = nodes + shift, from_one + shift
             values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
             out[outer] = (values @ w) * length
         return (np.sign(x).ravel() * out).reshape(x.shape)

@@ -25,11 +25,10 @@ from numeric.studies.bench import (
     Config,
     Row,
     best_error_within,
-    clear_caches,
     headline,
-    median_time,
     time_to_reach,
 )
+from numeric.studies.timing import clear_caches, median_time
 
 TINY = Config(cases=(Case(0.0, 1.0),), scheme_h=(), scheme_n=(50,), graded_meshes=(), levels=(),
               methods=frozenset({"scheme", "asymptotic"}), setup=False, budget=0.0, max_runs=1)
@@ -215,3 +214,26 @@ def test_headline_renders_when_our_solver_is_faster_than_every_mesh_of_the_paper
     assert h.paper_error_in_our_time is None and h.ratio == pytest.approx(0.2)
     bench = Benchmark(FULL, (), tuple(rows), (), (), 1.0)
     assert "the paper's scheme reaches nothing" in render(bench)
+
+
+def test_plane_rows_render_beside_their_axisymmetric_task():
+    # the plane table's second ratio is to the axisymmetric row of the same task (2 ms against 8 ms: 4), blank where
+    # the axisymmetric table has no such task
+    from numeric.studies.bench_report import render
+    from numeric.studies.timing import SideBySide
+
+    axisymmetric = (SideBySide("full solution for given c <= 0.95 (level 2)", 2e-3, 1.0, 1e-13, 6, "level 4"),)
+    plane = (SideBySide("full solution for given c <= 0.95 (level 2)", 8e-3, 2.0, 1e-11, 6, "median"),
+             SideBySide("plane law route, c = 1e-6, later calls", 3e-5, 0.01, 5e-7, 2, "solver"))
+    text = render(Benchmark(FULL, (), (), (), (), 1.0, {}, axisymmetric, plane))
+    assert "| full solution for given c <= 0.95 (level 2) | 8 | 2 | 4 |" in text
+    assert "| plane law route, c = 1e-6, later calls | 0.03 | 0.01 |  |" in text
+
+
+def test_the_plane_reference_is_the_converged_value():
+    # the plane benchmark's reference at nu = 0.3, c = 0.5 against test_plane's MU_REF_05 (six solves, degrees 20-28,
+    # spread 1.1e-12 = 4.6e-12 relative): within that spread plus the reference's own (four solves, ~1e-11 relative at
+    # this theta = 0.068, see reference_mu); measured 2.1e-12
+    from numeric.studies.plane_bench import reference_mu
+
+    assert abs(reference_mu(0.3, 0.5) / 0.23740259715125 - 1) < 1.5e-11

@@ -39,7 +39,8 @@ depend on c or gamma.
 
 ``side_by_side`` times the tasks of the whole-plane issue in the same run as the paper's scheme at
 h = 0.01: the full solution for given c and for given mu, inside c <= 0.95 and near c_max, at the
-default level and through the rtol = 1e-4 route, and ``stick_radius`` over 1000 random points.
+default level and through the rtol = 1e-4 route, and ``stick_radius`` over 1000 random points;
+``numeric.studies.plane_bench`` the strip punch's same tasks in the same run (plane strain).
 
 This module measures; ``numeric.studies.bench_report`` renders the Markdown and the plot.
 
@@ -57,7 +58,6 @@ from __future__ import annotations
 import math
 import os
 import statistics
-import sys
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
@@ -76,6 +76,8 @@ from numeric.core.table import table_compliance
 from numeric.solutions.flat_punch import flat_punch
 from numeric.solutions.power_law import indentation_constant, power_law
 from numeric.solutions.sweep import friction_coefficient, stick_radius
+from numeric.studies.plane_bench import plane_side_by_side
+from numeric.studies.timing import SideBySide, clear_caches, median_time
 
 __all__ = [
     "Case",
@@ -86,12 +88,9 @@ __all__ = [
     "CrossCheck",
     "Headline",
     "Benchmark",
-    "SideBySide",
     "side_by_side",
     "FULL",
     "QUICK",
-    "median_time",
-    "clear_caches",
     "reference",
     "measure_case",
     "run",
@@ -277,20 +276,6 @@ class Headline:
 
 
 @dataclass(frozen=True, slots=True)
-class SideBySide:
-    """One task timed in the same run as the paper's scheme at h = 0.01: ``seconds`` (median; per call),
-    ``ratio`` = seconds / the scheme's, ``error`` the worst relative error over ``points`` points
-    against ``reference``."""
-
-    task: str
-    seconds: float
-    ratio: float
-    error: float
-    points: int
-    reference: str
-
-
-@dataclass(frozen=True, slots=True)
 class Benchmark:
     config: Config
     references: tuple[Reference, ...]
@@ -300,52 +285,7 @@ class Benchmark:
     seconds: float
     machine: dict = field(default_factory=dict)
     side_by_side: tuple[SideBySide, ...] = ()
-
-
-# --------------------------------------------------------------------------------- timing
-def median_time(call: Callable[[], object], *, before: Callable[[], object] | None = None, budget: float = 0.5,
-                max_runs: int = 5, warm: bool = False) -> float:
-    """Median seconds per call of ``call()`` over runs until ``budget`` seconds or ``max_runs`` runs
-    (at least one run).
-
-    The first call calibrates: calls shorter than 1 ms are repeated within a run so that a
-    run lasts about 2 ms (not with ``before``). It counts as a run only if ``warm`` (the
-    caller has made a warm-up call already) and it is not repeated. ``before`` (untimed)
-    runs before each call, e.g. to clear a cache.
-    """
-    if before is not None:
-        before()
-    t0 = time.perf_counter()
-    call()
-    first = time.perf_counter() - t0
-    inner = 1 if before is not None or first >= 1e-3 else max(1, int(2e-3 / max(first, 1e-7)))
-    times: list[float] = [first] if warm and inner == 1 else []
-    total = sum(times)
-    while not times or (len(times) < max_runs and total < budget):
-        if before is not None:
-            before()
-        t0 = time.perf_counter()
-        for _ in range(inner):
-            call()
-        elapsed = time.perf_counter() - t0
-        times.append(elapsed / inner)
-        total += elapsed
-    return statistics.median(times)
-
-
-def clear_caches() -> tuple[str, ...]:
-    """Clear every ``functools`` cache in the loaded ``numeric`` and ``asymptotics`` modules.
-
-    Returns the qualified names of the caches cleared (sorted)."""
-    names = []
-    for name, module in sorted(sys.modules.items()):
-        if module is None or not (name.startswith("numeric.") or name.startswith("asymptotics.")):
-            continue
-        for attr, obj in vars(module).items():
-            if callable(getattr(obj, "cache_clear", None)) and getattr(obj, "__module__", None) == name:
-                obj.cache_clear()
-                names.append(f"{name}.{attr}")
-    return tuple(sorted(names))
+    plane: tuple[SideBySide, ...] = ()  # numeric.studies.plane_bench, same run
 
 
 def _timed(call: Callable[[], object], config: Config, before: Callable[[], object] | None = None,
@@ -571,9 +511,12 @@ def run(config: Config = FULL, progress: Callable[[str], object] | None = None) 
     machine = {"cores": os.cpu_count(), "blas_threads": os.environ.get("OPENBLAS_NUM_THREADS", "unset"),
                "load": load}
     note("side by side with the paper's scheme at h = 0.01")
-    sides = side_by_side(config) if "scheme" in config.methods and "solver" in config.methods else ()
+    both = "scheme" in config.methods and "solver" in config.methods
+    sides = side_by_side(config) if both else ()
+    note("plane strain: the strip punch's tasks, the plane scheme at h = 0.02")
+    plane = plane_side_by_side(config.budget, config.max_runs) if both else ()
     return Benchmark(config, tuple(references), tuple(rows), tuple(setups), tuple(_cross_checks(rows, references)),
-                     time.perf_counter() - start, machine, tuple(sides))
+                     time.perf_counter() - start, machine, tuple(sides), tuple(plane))
 
 
 # --------------------------------------------------------------------------- side by side

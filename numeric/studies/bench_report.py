@@ -83,8 +83,8 @@ def _quantity_table(rows: Sequence[Row], quantity: str, adhesive: bool) -> list[
 
 def render(bench: Benchmark) -> str:
     """The Markdown record (rows in a fixed order; the timings themselves vary from run to run)."""
-    lines = (_preamble(bench) + _side_by_side(bench) + _headlines(bench) + _references(bench) + _setups(bench)
-             + _every_method(bench))
+    lines = (_preamble(bench) + _side_by_side(bench) + _plane(bench) + _headlines(bench) + _references(bench)
+             + _setups(bench) + _every_method(bench))
     return "\n".join(lines) + "\n"
 
 
@@ -122,6 +122,26 @@ def _side_by_side(bench: Benchmark) -> list[str]:
              "| task | time, ms | ratio to the scheme | worst error | points | reference |", "|---|---|---|---|---|---|"]
     lines += [f"| {s.task} | {_ms(s.seconds)} | {s.ratio:.3g} | {_err(s.error)} | {s.points} | {s.reference} |"
               for s in bench.side_by_side]
+    return lines + [""]
+
+
+def _plane(bench: Benchmark) -> list[str]:
+    if not bench.plane:
+        return []
+    axisymmetric = {s.task: s.seconds for s in bench.side_by_side}
+    lines = ["## Plane strain: the strip punch's tasks in the same run", "",
+             "From `numeric.studies.plane_bench`: the strip punch (`numeric.plane.flat_punch`) for the same tasks as "
+             "above (c <= 0.95 at the same (nu, c); near the plane c_max of nu = 0, -1/2, 0.3), the plane "
+             "counterpart of the paper's scheme at its resolution, and the law route below c = 1e-5. The first ratio "
+             "is to the plane scheme at h = 0.02 timed here, the second to the axisymmetric solver's same task in the "
+             "table above; the error is of mu (given c) or 1 - c (given mu) against the median of degrees 26 and 28 "
+             "(two layouts, `numeric.studies.plane_bench.reference_mu`; at nu = 0.25 level 4 is 5e-10 off).", "",
+             "| task | time, ms | ratio to the plane scheme | ratio to the axisymmetric task | worst error | points | "
+             "reference |", "|---|---|---|---|---|---|---|"]
+    for s in bench.plane:
+        twin = axisymmetric.get(s.task)
+        lines.append(f"| {s.task} | {_ms(s.seconds)} | {s.ratio:.3g} | {'' if twin is None else f'{s.seconds / twin:.3g}'} "
+                     f"| {_err(s.error)} | {s.points} | {s.reference} |")
     return lines + [""]
 
 

@@ -1,0 +1,71 @@
+"""Timing of the benchmarks: the median time of a call, the caches a new problem would not find, and the record
+of one task timed beside a yardstick (``numeric.studies.bench``, ``numeric.studies.plane_bench``)."""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+__all__ = ["SideBySide", "median_time", "clear_caches"]
+
+
+@dataclass(frozen=True, slots=True)
+class SideBySide:
+    """One task timed in the same run as a yardstick (the paper's scheme at h = 0.01, or for the plane tasks the
+    axisymmetric solver's same task): ``seconds`` (median; per call), ``ratio`` = seconds / the yardstick's, ``error``
+    the worst relative error over ``points`` points against ``reference``."""
+
+    task: str
+    seconds: float
+    ratio: float
+    error: float
+    points: int
+    reference: str
+
+
+def median_time(call: Callable[[], object], *, before: Callable[[], object] | None = None, budget: float = 0.5,
+                max_runs: int = 5, warm: bool = False) -> float:
+    """Median seconds per call of ``call()`` over runs until ``budget`` seconds or ``max_runs`` runs
+    (at least one run).
+
+    The first call calibrates: calls shorter than 1 ms are repeated within a run so that a
+    run lasts about 2 ms (not with ``before``). It counts as a run only if ``warm`` (the
+    caller has made a warm-up call already) and it is not repeated. ``before`` (untimed)
+    runs before each call, e.g. to clear a cache.
+    """
+    if before is not None:
+        before()
+    t0 = time.perf_counter()
+    call()
+    first = time.perf_counter() - t0
+    inner = 1 if before is not None or first >= 1e-3 else max(1, int(2e-3 / max(first, 1e-7)))
+    times: list[float] = [first] if warm and inner == 1 else []
+    total = sum(times)
+    while not times or (len(times) < max_runs and total < budget):
+        if before is not None:
+            before()
+        t0 = time.perf_counter()
+        for _ in range(inner):
+            call()
+        elapsed = time.perf_counter() - t0
+        times.append(elapsed / inner)
+        total += elapsed
+    return statistics.median(times)
+
+
+def clear_caches() -> tuple[str, ...]:
+    """Clear every ``functools`` cache in the loaded ``numeric`` and ``asymptotics`` modules.
+
+    Returns the qualified names of the caches cleared (sorted)."""
+    names = []
+    for name, module in sorted(sys.modules.items()):
+        if module is None or not (name.startswith("numeric.") or name.startswith("asymptotics.")):
+            continue
+        for attr, obj in vars(module).items():
+            if callable(getattr(obj, "cache_clear", None)) and getattr(obj, "__module__", None) == name:
+                obj.cache_clear()
+                names.append(f"{name}.{attr}")
+    return tuple(sorted(names))

@@ -45,7 +45,7 @@ from numeric.core.plane_cauchy import HBETA, PLAIN as PLAIN_WEIGHT, POWER, Famil
 from numeric.core.quadrature import gauss_legendre
 
 __all__ = ["PLAIN", "STICK_END", "SLIP_END", "EDGE", "STICK", "SLIP", "AT_C", "AT_ONE", "PlaneResolution",
-           "PLANE_RESOLUTIONS", "plane_partner", "PlaneLayout", "plane_layout", "element_families",
+           "plane_partner", "PlaneLayout", "plane_layout", "element_families",
            "COLLOCATION_POWER", "collocation_chart", "PointSet", "collocation_points", "locate"]
 
 PLAIN, STICK_END, SLIP_END, EDGE = 0, 1, 2, 3
@@ -67,16 +67,6 @@ class PlaneResolution:
     c_fraction: float = 0.25
     edge_fraction: float = 0.25
     grading: float = 2.0
-
-
-#: Levels 0-4, coarse to fine (level 2 the default).
-PLANE_RESOLUTIONS: tuple[PlaneResolution, ...] = (
-    PlaneResolution(degree=8, singular_degree=2),
-    PlaneResolution(degree=10, singular_degree=2),
-    PlaneResolution(degree=13, singular_degree=3),
-    PlaneResolution(degree=16, singular_degree=3),
-    PlaneResolution(degree=20, singular_degree=3),
-)
 
 
 def plane_partner(res: PlaneResolution) -> PlaneResolution:

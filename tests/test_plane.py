@@ -421,3 +421,21 @@ def test_the_slip_converges(nu, c):
                         [c + 0.3 * (1 - c), 0.5 * (1 + c), c + 0.7 * (1 - c), 1 - 1e-5, 1.0, np.nextafter(c, 2.0)]])
     got = s.field.slip(x)
     assert np.all(np.isfinite(got)) and np.max(np.abs(got - fine.slip(x))) < 1e-11
+
+
+@pytest.mark.parametrize("nu, c", [(0.45, 0.05), (0.0, 0.99), (-0.9, 0.5)])
+def test_the_slip_rule_graded_where_the_strain_is_singular_agrees_with_full_grading(nu, c):
+    # the slip integral grades toward c (SLIP_PIECES_AT_C pieces) and toward x only as far as x is near the edge
+    # (pieces_toward); against the rule graded fully toward both ends (SLIP_PIECES each) on the same solution: the
+    # strain is smooth away from c and 1, so the two agree to rounding (measured 1e-15 of u ~ 0.03-0.17; the sum of
+    # ~1000 terms of size |u| at a few ulp each bounds it by 1e-13)
+    from numeric.core.plane_fields import pieces_toward
+    field = plane.flat_punch(nu=nu, c=c).field
+    x = c + (1 - c) * np.array([1e-9, 1e-5, 0.01, 0.3, 0.9, 0.999, 1 - 1e-9, 1.0])
+    assert list(pieces_toward((1 - x) / (x - c))[[0, 3, 7]]) == [1, 1, 50]
+    s, one_minus_s, w = graded_both_ends()
+    length = x - c
+    # (nodes that round onto c taken on its slip side, as the slip integral does)
+    full = [field.strain(np.maximum(c + d * s, np.nextafter(c, 2.0)), (v - 1.0) - d * one_minus_s) @ w * d
+            for v, d in zip(x, length)]
+    assert np.max(np.abs(field.slip(x) - np.array(full))) < 1e-13

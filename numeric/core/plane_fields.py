@@ -20,7 +20,7 @@ References
 from __future__ import annotations
 
 import math
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -30,10 +30,16 @@ from numeric.core.plane_eigenvalue import PlaneEigensolution
 from numeric.core.plane_operators import PlaneOperators, normal_factor
 from numeric.core.quadrature import gauss_legendre
 
-__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "NODE_CLEARANCE", "graded_both_ends", "weighted_tail_integrals"]
+__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_PIECES_AT_C", "SLIP_NODES", "NODE_CLEARANCE", "graded_both_ends",
+           "graded_toward", "pieces_toward", "weighted_tail_integrals"]
 
 SLIP_PIECES = 50
-"""Graded pieces toward each end of [c, x] in the slip integral (down to 2^-50 of its length)."""
+"""Graded pieces toward each end of [0, 1] in ``graded_both_ends`` (down to 2^-50 of its length), and toward x = 1
+in the slip integral: the strain's (1 - t)^(alpha - 1/2)."""
+SLIP_PIECES_AT_C = 32
+"""Graded pieces toward c in the slip integral: the strain is bounded there ((t - c)^(1/2 - alpha) and the h_beta
+family's near-logarithm); 30 pieces agree with 50 to 1.4e-17 (25: 4e-16, 20: 1.4e-14) over 11 (nu, c) from
+nu = -0.9 to 0.49 and c = 0.05 to 0.9999 at x from c + 1e-9 (1 - c) to 1 (measured)."""
 SLIP_NODES = 12
 """Gauss nodes per piece (the pieces see the end singularities at >= 3 half-lengths: 5.83^-24)."""
 NODE_CLEARANCE = 1e-13
@@ -120,28 +126,34 @@ class PlaneField:
         ax = np.abs(x).ravel()
         out = np.zeros(ax.shape)
         outer = np.flatnonzero(ax > self.c)
-        if outer.size:
-            s, one_minus_s, w = graded_both_ends()
-            length = ax[outer] - self.c  # the offset of x from c
-            nodes = self.c + length[:, None] * s[None, :]
-            # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
-            from_one = (ax[outer] - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
-            # nodes that round to c go to its slip side; nodes next to an element end inside the slip zone (single
-            # basis functions' transforms are logarithmic there, and where the chart's anchor changes from c to 1 the
-            # chart value of a node a few ulp off the end rounds to the end itself: u came out NaN at x = (1 + c)/2
-            # and at other ends) move to NODE_CLEARANCE from the end on their own side, t - 1 with them (the strain
-            # is smooth across such an end, so the integral moves by ~1e-13 times its weight there)
-            nodes = np.where(nodes == self.c, np.nextafter(self.c, 2.0), nodes)
-            ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
-            ends = ends[(ends > self.c) & (ends < 1.0)]
-            if ends.size:
-                nearest = ends[np.abs(nodes[..., None] - ends).argmin(axis=-1)]
-                shift = np.where(nodes >= nearest, NODE_CLEARANCE, -NODE_CLEARANCE) - (nodes - nearest)
-                shift = np.where(np.abs(nodes - nearest) < NODE_CLEARANCE, shift, 0.0)
-                nodes, from_one = nodes + shift, from_one + shift
-            values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
-            out[outer] = (values @ w) * length
+        # the strain is singular at c and at 1 only: graded toward c always, toward x as far as x is near 1
+        pieces = pieces_toward((1.0 - ax[outer]) / (ax[outer] - self.c))
+        for k in np.unique(pieces):
+            group = outer[pieces == k]
+            out[group] = self._slip_integral(ax[group], *graded_toward(SLIP_PIECES_AT_C, int(k)))
         return (np.sign(x).ravel() * out).reshape(x.shape)
+
+    def _slip_integral(self, ax: np.ndarray, s: np.ndarray, one_minus_s: np.ndarray, w: np.ndarray) -> np.ndarray:
+        """int_c^x (H q - gamma p) dt for c < x <= 1 by the rule (s, 1 - s, w) on [0, 1] mapped onto [c, x]."""
+        length = ax - self.c  # the offset of x from c
+        nodes = self.c + length[:, None] * s[None, :]
+        # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
+        from_one = (ax - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
+        # nodes that round to c go to its slip side; nodes next to an element end inside the slip zone (single
+        # basis functions' transforms are logarithmic there, and where the chart's anchor changes from c to 1 the
+        # chart value of a node a few ulp off the end rounds to the end itself: u came out NaN at x = (1 + c)/2
+        # and at other ends) move to NODE_CLEARANCE from the end on their own side, t - 1 with them (the strain
+        # is smooth across such an end, so the integral moves by ~1e-13 times its weight there)
+        nodes = np.where(nodes == self.c, np.nextafter(self.c, 2.0), nodes)
+        ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
+        ends = ends[(ends > self.c) & (ends < 1.0)]
+        if ends.size:
+            nearest = ends[np.abs(nodes[..., None] - ends).argmin(axis=-1)]
+            shift = np.where(nodes >= nearest, NODE_CLEARANCE, -NODE_CLEARANCE) - (nodes - nearest)
+            shift = np.where(np.abs(nodes - nearest) < NODE_CLEARANCE, shift, 0.0)
+            nodes, from_one = nodes + shift, from_one + shift
+        values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
+        return (values @ w) * length
 
 
 def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -149,32 +161,43 @@ def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     piece in sigma = sqrt(s) (the strain's worst end behaviour, (1 - t)^(alpha - 1/2), becomes smooth).
 
     Returns nodes s, their complements 1 - s (exact: next to 1 a double s would round 1 - s) and weights."""
-    return _GRADED
+    return graded_toward(SLIP_PIECES, SLIP_PIECES)
 
 
-def _build_graded() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _half(pieces: int) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes s in [0, 1/2] and weights: ``pieces`` pieces [lo, 2 lo], lo = 2^-2 ... 2^-(pieces + 1), and the innermost
+    [0, 2^-(pieces + 1)] in sigma = sqrt(s)."""
     x, w = gauss_legendre(SLIP_NODES)
-    lo = 0.5 ** np.arange(2, SLIP_PIECES + 2, dtype=float)  # pieces [lo, 2 lo] within [0, 1/2]
-    s_half = (1.5 * lo)[:, None] + (0.5 * lo)[:, None] * x[None, :]
-    w_half = (0.5 * lo)[:, None] * w[None, :]
-    s_half, w_half = s_half.ravel(), w_half.ravel()
+    lo = 0.5 ** np.arange(2, pieces + 2, dtype=float)  # pieces [lo, 2 lo] within [0, 1/2]
+    s_half = ((1.5 * lo)[:, None] + (0.5 * lo)[:, None] * x[None, :]).ravel()
+    w_half = ((0.5 * lo)[:, None] * w[None, :]).ravel()
     # innermost [0, h]: s = h sigma^2, ds = 2 h sigma d sigma, Gauss-Legendre in sigma: exact for smooth integrands
     # and for s^(-1/2) times smooth (the worst end behaviour), s^lam in between to ~n^-(4 lam + 4) of this piece
-    h = lo[-1]
+    h = 0.5 ** (pieces + 1)
     sj, wj = 0.5 * (x + 1.0), 0.5 * w
-    s_in = h * sj * sj
-    w_in = 2.0 * h * sj * wj
-    s0 = np.concatenate([s_in, s_half])
-    w0 = np.concatenate([w_in, w_half])
-    s = np.concatenate([s0, 1.0 - s0[::-1]])
-    one_minus = np.concatenate([1.0 - s0, s0[::-1]])
-    wt = np.concatenate([w0, w0[::-1]])
+    return np.concatenate([h * sj * sj, s_half]), np.concatenate([2.0 * h * sj * wj, w_half])
+
+
+@lru_cache(maxsize=None)
+def graded_toward(at_zero: int, at_one: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """As ``graded_both_ends`` with ``at_zero`` pieces toward 0 and ``at_one`` toward 1 (read-only arrays)."""
+    s0, w0 = _half(at_zero)
+    s1, w1 = _half(at_one)
+    s = np.concatenate([s0, 1.0 - s1[::-1]])
+    one_minus = np.concatenate([1.0 - s0, s1[::-1]])
+    wt = np.concatenate([w0, w1[::-1]])
     for a in (s, one_minus, wt):
         a.setflags(write=False)
     return s, one_minus, wt
 
 
-_GRADED = _build_graded()
+def pieces_toward(distance: np.ndarray) -> np.ndarray:
+    """Pieces toward the end s = 1 of a rule on [0, 1] whose integrand is singular at 1 + ``distance`` (>= 0): until
+    the innermost piece, 2^-(j + 1) long, is no longer than that distance (every piece then sees the singularity at
+    >= 3 half-lengths, as ``SLIP_NODES`` assumes), at least 1 and at most SLIP_PIECES."""
+    with np.errstate(divide="ignore"):
+        needed = np.ceil(-np.log2(np.asarray(distance, dtype=float))) - 1.0
+    return np.clip(np.nan_to_num(needed, posinf=SLIP_PIECES), 1, SLIP_PIECES).astype(int)
 
 
 def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight) -> tuple[np.ndarray, np.ndarray]:

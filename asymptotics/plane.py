@@ -212,15 +212,18 @@ def bonded_traction(x: ArrayLike, gamma: float) -> np.ndarray | complex:
     """Fully bonded flat punch (Abramov): p + i q = (cosh(pi eps)/pi) (1 - x)^(-1/2 - i eps) (1 + x)^(-1/2 + i eps).
 
     Solves H w = i gamma w on (-1, 1) (stick everywhere) with int p = 1; q > 0 near x = 1-, the
-    outward traction, and p changes sign infinitely often as x -> 1.
+    outward traction, and p changes sign infinitely often as x -> 1. At x = +-1 the traction has no value (its
+    modulus grows without bound while its phase turns without end): ValueError there (it was NaN with a warning).
 
     >>> w = bonded_traction(0.0, 0.5)
     >>> round(float(w.real), 12), float(w.imag)
     (0.367552596948, 0.0)
     """
     x_arr = check_x(np.abs(x)) * np.sign(x)
+    if np.any(np.abs(x_arr) == 1.0):
+        raise ValueError("x must lie strictly inside (-1, 1) for the bonded punch: at the edges its traction "
+                         "oscillates in sign with unbounded modulus and has no value")
     eps = float(bonded_index(gamma))
     log_ratio = 2.0 * np.arctanh(x_arr)  # log((1 + x)/(1 - x))
-    with np.errstate(divide="ignore"):
-        out = (math.cosh(math.pi * eps) / math.pi) / np.sqrt((1.0 - x_arr) * (1.0 + x_arr)) * np.exp(1j * eps * log_ratio)
+    out = (math.cosh(math.pi * eps) / math.pi) / np.sqrt((1.0 - x_arr) * (1.0 + x_arr)) * np.exp(1j * eps * log_ratio)
     return out[()] if out.ndim == 0 else out

@@ -441,3 +441,63 @@ def test_the_slip_rule_graded_where_the_strain_is_singular_agrees_with_full_grad
     full = [field.strain(np.maximum(c + d * s, np.nextafter(c, 2.0)), (v - 1.0) - d * one_minus_s) @ w * d
             for v, d in zip(x, length)]
     assert np.max(np.abs(field.slip(x) - np.array(full))) < 1e-13
+
+
+@pytest.mark.parametrize("nu", [0.0, -0.9])
+def test_beyond_mu_gamma_1e6_the_solution_is_linear_in_one_over_mu_gamma(nu):
+    # above mu gamma = 1e6 c, q, u come from the limit's two solves (mu gamma = 1e5, 1e6), linear in 1/(mu gamma);
+    # against the solver run directly at mu gamma = 1e7 (a different route, which still converges there): measured c
+    # 1.6e-12 (nu = 0), 1.5e-12 (-0.9); p, q 1.2e-9, 1.3e-10 of max(1, |.|) next to the edge; u 5e-12, 2e-13. Bounds:
+    # c 1e-10 (the level's own accuracy near c_max, README), stresses 5e-9 and u 1e-10 (the direct solve's own error
+    # at x = 1 - 1e-5 near c_max: 1e-9)
+    from numeric.solutions.plane_solver import solve_given_mu
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    mu = 1e7 / g
+    s = plane.flat_punch(nu=nu, mu=mu)
+    assert s.route.startswith("near the limit")
+    direct = solve_given_mu(mu, g, 2).field
+    assert abs(s.c - direct.c) < 1e-10
+    x = np.array([0.0, 0.5 * s.c, 0.9 * s.c, s.c + 0.1 * s.gap, 0.5 * (1 + s.c), 1 - 1e-5])
+    (p, q), (pd, qd) = (s.pressure(x), s.shear(x)), direct.pressure_shear(x)
+    assert np.max(np.abs(p - pd) / np.maximum(1.0, np.abs(pd))) < 5e-9
+    assert np.max(np.abs(q - qd) / np.maximum(1.0, np.abs(qd))) < 5e-9
+    assert np.max(np.abs(s.slip(x) - direct.slip(x))) < 1e-10
+    # Coulomb's law on the slip zones exactly; the stick-slip neighbourhood is refused, not guessed
+    assert np.all(np.abs(q[3:]) == pytest.approx(mu * p[3:], rel=1e-15))
+    with pytest.raises(ValueError, match="stick-slip point"):
+        s.pressure(s.c)
+
+
+def test_friction_up_to_1e300_reaches_c_max_and_the_cylinder_follows():
+    # mu = 1e16 and 1e300: c within the limit's error of c_max (slip_limit), which the solver could not reach (it
+    # raised SolverError or gave p(c) = -3017 there); the cylinder on the same field has a finite load
+    limit = plane.slip_limit(0.3)
+    for mu in (1e16, 1e300):
+        s = plane.flat_punch(nu=0.3, mu=mu)
+        assert abs(s.gap - limit.gap) <= 2 * limit.error + limit.gap * 1e-9  # the A/(mu gamma) term: 1e-16 of 1 - c
+        h = plane.power_law(2, nu=0.3, mu=mu)
+        assert math.isfinite(h.load_ratio) and h.load_ratio > 1.0
+
+
+def test_a_stick_width_above_c_max_is_refused_as_such():
+    # nu = -0.9: c_max = 0.866 (plane_strain.md); c = 0.999999 made Newton fail with SolverError
+    with pytest.raises(NoEigenvalueError, match="above the largest"):
+        plane.flat_punch(nu=-0.9, c=0.999999)
+
+
+def test_full_stick_to_double_precision_at_small_gamma():
+    # nu = 0.45 (gamma = 1/11), mu = 3: 1 - c ~ 1e-40 by the first-order law, far below what c can show; the solver
+    # failed (SolverError). Above the friction at 1 - c = 2^-40 = 9.1e-13 the bonded punch is returned, c = 1 - 2^-41
+    # +- 2^-41: its stresses against the solver's at 1 - c = 1e-12 were measured within 3.3e-12 (p), 3.8e-12 (q)
+    from numeric.solutions.plane_punch import FULL_STICK_GAP, full_stick_friction
+    g = 1 / 11
+    s = plane.flat_punch(nu=0.45, mu=3.0)
+    assert s.route.startswith("full stick") and 0 < s.gap <= s.error and s.gap + s.error <= FULL_STICK_GAP
+    edge = plane.flat_punch(nu=0.45, c=1 - FULL_STICK_GAP)
+    # the public route and the threshold's own solve start differently: within the estimated error (9e-11 apart)
+    assert abs(edge.mu - full_stick_friction(g)) <= edge.error and edge.mu < 3.0
+    x = np.array([0.0, 0.5, 0.9, 0.99])
+    assert np.max(np.abs(s.pressure(x) - edge.pressure(x))) < 1e-10
+    assert np.max(np.abs(s.shear(x) - edge.shear(x))) < 1e-10
+    with pytest.raises(ValueError, match="bonded punch"):
+        s.pressure(1.0)

@@ -38,6 +38,7 @@ from asymptotics.materials import check_n
 
 from numeric.core.plane_fields import PlaneField, graded_both_ends, weighted_tail_integrals
 from numeric.solutions.plane_law import FullSlipField
+from numeric.solutions.plane_near_limit import NearLimitField
 from numeric.solutions.plane_punch import StripPunchSolution, points, strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
 
@@ -111,6 +112,8 @@ class PlanePowerLawSolution:
         n = self.n
         if isinstance(f, PlaneField):
             return weighted_tail_integrals(f, ax, lambda t, one_minus_t: t ** (-n))
+        if isinstance(f, NearLimitField):
+            return f.tail_integrals(ax, lambda t, one_minus_t: t ** (-n))
         t, u, g = _edge_rule(ax)  # closed-form flat punch: t = 1 - u^2 on [x, 1]
         p, q = f.edge_pressure_shear(u, t)
         g = g * t ** (-n)
@@ -151,9 +154,9 @@ class PlanePowerLawSolution:
 
     def _load_factor(self) -> float:
         f = self.flat.field
-        if isinstance(f, PlaneField):
-            tail, _ = weighted_tail_integrals(f, np.array([1e-300]),
-                                              lambda t, one_minus_t: load_weight(self.n, t, np.sqrt(one_minus_t)))
+        if isinstance(f, (PlaneField, NearLimitField)):
+            tails = weighted_tail_integrals if isinstance(f, PlaneField) else type(f).tail_integrals
+            tail, _ = tails(f, np.array([1e-300]), lambda t, one_minus_t: load_weight(self.n, t, np.sqrt(one_minus_t)))
             return float(self.n / math.pi * tail[0])
         t, u, g = _edge_rule(np.zeros(1))
         p, _ = f.edge_pressure_shear(u, t)

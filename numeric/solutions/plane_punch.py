@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -31,13 +32,16 @@ from asymptotics.plane import bonded_traction, pressure_sadowsky, stick_width_fi
 
 from numeric.core.errors import NoEigenvalueError
 from numeric.core.plane_fields import PlaneField
+from numeric.core.plane_guess import gap_max, stick_width_guess
+from numeric.core.plane_guess_data import GAMMA_N
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
-from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, PLANE_LEVELS, solve_given_c, solve_given_mu,
-                                            solve_limit)
+from numeric.solutions.plane_near_limit import near_limit_field
+from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, LIMIT_MU_GAMMA, PLANE_LEVELS, solve_given_c,
+                                            solve_given_mu, solve_limit)
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
-           "plane_largest_stick_width", "points"]
+           "plane_largest_stick_width", "points", "FULL_STICK_GAP", "full_stick_friction", "ABOVE_C_MAX"]
 
 
 def points(x: ArrayLike) -> np.ndarray:
@@ -162,6 +166,10 @@ def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError
                               fine.residual, fine)
 
 
+#: Given c, 1 - c below 1 - c_max of the guess table by more than this (relative) is refused at once (the table's
+#: 1 - c_max is good to ~1e-8 relative; nearer, the solver decides): Newton in theta failed to converge there before.
+ABOVE_C_MAX = 1e-6
+
 #: Given mu, the law is asked whether c < C_SMALLEST where the first-order c is below this: the true c is below the
 #: first-order one (mu/mu_1 - 1 > 0), by a factor exp(-L gamma^2 r) >= exp(-0.5 L), so from here on it is above 1e-5.
 FIRST_ORDER_CHECK = 1e-2
@@ -173,6 +181,30 @@ def _below_solver(mu: float, gamma: float, level: int) -> bool:
     if first_order >= FIRST_ORDER_CHECK:
         return False
     return first_order < C_SMALLEST or mu < law_friction_coefficient(C_SMALLEST, gamma, level)[0]
+
+
+#: Given mu, 1 - c below this (2^-40 = 9.1e-13: c = 1 - 2^-40 is a double and gives this gap back exactly) is
+#: answered as full stick (the stresses of the bonded punch were measured within 3.3e-12 (p) and 3.8e-12 (q) of the
+#: solver's at 1 - c = 1e-12, nu = 0.45; the solver itself took seconds below it and failed further down, where c is
+#: 1 to double precision).
+FULL_STICK_GAP = 2.0**-40
+
+
+@lru_cache(maxsize=64)
+def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
+    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the
+    stick zone fills the contact to within 9.1e-13 (for gamma below the guess table's GAMMA_N, where c_max lies within
+    1e-12 of 1)."""
+    return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
+
+
+def _full_stick(mu: float, gamma: float, level: int) -> bool:
+    """Whether 1 - c < FULL_STICK_GAP for mu: asked only beyond the guess table toward full stick at small gamma."""
+    if gamma >= GAMMA_N or float(stick_width_first_order(mu, gamma)) < 0.5:
+        return False
+    if stick_width_guess(math.atan(mu * gamma), gamma) is not None:
+        return False
+    return mu >= full_stick_friction(gamma, level)
 
 
 def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
@@ -210,6 +242,10 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         if c < C_SMALLEST:
             mu, error = law_friction_coefficient(c, g, level)
             return _from_law(nu, g, mu, c, error)
+        largest = gap_max(g)  # 1 - c_max from the guess table (nan below its gamma range, where c_max is within 1e-8 of 1)
+        if 1.0 - c < (1.0 - ABOVE_C_MAX) * largest:
+            raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
+                                    f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
         solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = float(check_mu(mu))
@@ -220,6 +256,19 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     if _below_solver(mu, g, level):
         c, error = law_stick_width(mu, g, level)
         return _from_law(nu, g, mu, c, error)
+    if _full_stick(mu, g, level):
+        route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level):.10g}, the friction "
+                 f"at 1 - c = {FULL_STICK_GAP:.2g} (solver level {level}); c = 1 - {FULL_STICK_GAP / 2:.2g} +- "
+                 f"{FULL_STICK_GAP / 2:.2g}, stresses of the bonded punch (Abramov), no slip")
+        return StripPunchSolution(nu, g, mu, 1.0 - 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP,
+                                  route, 0.0, _Abramov(g))
+    if mu * g > LIMIT_MU_GAMMA[1]:
+        limit = solve_limit(g, level)
+        f = near_limit_field(mu, g, limit.near)
+        route = (f"near the limit mu -> inf (mu gamma > {LIMIT_MU_GAMMA[1]:g}): c, q, u linear in 1/(mu gamma) through "
+                 f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
+                 f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
+        return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
     solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 

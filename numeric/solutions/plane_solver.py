@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-
+from functools import lru_cache
 
 from asymptotics.plane import stick_width_first_order
 
@@ -67,6 +67,7 @@ class PlaneSolve:
     error: float | DeferredError
     level: int
     gap_limit: float = math.nan  # 1 - c_max where the limit mu -> inf was extrapolated
+    near: tuple[tuple[float, float, PlaneField], ...] = ()  # the limit's solves: (mu gamma, 1 - c, field)
 
 
 def _mu(theta: float, gamma: float) -> float:
@@ -121,11 +122,13 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
 LIMIT_MU_GAMMA = (1e5, 1e6)
 
 
+@lru_cache(maxsize=16)
 def solve_limit(gamma: float, level: int) -> PlaneSolve:
     """The limit mu -> inf (slip zones without pressure) at ``level``: c = c_max, extrapolated linearly in 1/(mu gamma)
     from ``LIMIT_MU_GAMMA`` (at mu = inf itself the generic mode degenerates); error in 1 - c_max: the partner's
     shift at the larger mu gamma, or the extrapolation's neglected O(mu^-2) term if larger. Against the limit problem
-    solved at theta = pi/2 where that works (nu = 0, -1/2): 2e-13, 1e-13 absolute in 1 - c_max."""
+    solved at theta = pi/2 where that works (nu = 0, -1/2): 2e-13, 1e-13 absolute in 1 - c_max. The two solves are
+    kept (``near``) for friction beyond ``LIMIT_MU_GAMMA[1]``; the result is cached per gamma and level."""
     res = PLANE_LEVELS[level]
     gap = gap_fit(gamma)
     xi = math.log1p(-gap) - math.log(gap)
@@ -140,7 +143,8 @@ def solve_limit(gamma: float, level: int) -> PlaneSolve:
     fine = fields[1]
     partner = _gap_error(fine, partner_shift_xi(math.atan(m2), gamma, solution, plane_partner(res)))
     # the neglected B/(m1 m2) of the extrapolation: B ~ A^2/(1 - c_max), i.e. ~ (gaps[0] - gaps[1])^2/(1 - c_max)
-    return PlaneSolve(fine, max(partner, (gaps[0] - gaps[1]) ** 2 / gap_max), level, gap_max)
+    return PlaneSolve(fine, max(partner, (gaps[0] - gaps[1]) ** 2 / gap_max), level, gap_max,
+                      tuple(zip(LIMIT_MU_GAMMA, gaps, fields)))
 
 
 def _gap_error(fine: PlaneField, shift: float) -> float:

@@ -130,15 +130,33 @@ class PlaneField:
         pieces = pieces_toward((1.0 - ax[outer]) / (ax[outer] - self.c))
         for k in np.unique(pieces):
             group = outer[pieces == k]
-            out[group] = self._slip_integral(ax[group], *graded_toward(SLIP_PIECES_AT_C, int(k)))
+            lo = np.full(group.size, self.c)
+            out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(SLIP_PIECES_AT_C, int(k)))
         return (np.sign(x).ravel() * out).reshape(x.shape)
 
-    def _slip_integral(self, ax: np.ndarray, s: np.ndarray, one_minus_s: np.ndarray, w: np.ndarray) -> np.ndarray:
-        """int_c^x (H q - gamma p) dt for c < x <= 1 by the rule (s, 1 - s, w) on [0, 1] mapped onto [c, x]."""
-        length = ax - self.c  # the offset of x from c
-        nodes = self.c + length[:, None] * s[None, :]
-        # t - 1 = (x - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
-        from_one = (ax - 1.0)[:, None] - length[:, None] * one_minus_s[None, :]
+    def tail_strain_integrals(self, lo: np.ndarray, weight) -> np.ndarray:
+        """int_lo^1 weight(t) (H q - gamma p)(t) dt for c <= lo <= 1 (weight(t) smooth on [lo, 1]; 0 at lo = 1): graded
+        toward 1 (the strain's (1 - t)^(alpha - 1/2)) and toward lo as far as lo is near c."""
+        lo = np.asarray(lo, dtype=float).ravel()
+        out = np.zeros(lo.shape)
+        below = lo < 1.0
+        with np.errstate(divide="ignore"):
+            pieces = np.where(lo == self.c, SLIP_PIECES_AT_C, pieces_toward((lo - self.c) / np.where(below, 1.0 - lo, 1.0)))
+        for k in np.unique(pieces[below]):
+            group = np.flatnonzero(below & (pieces == k))
+            out[group] = self._strain_integral(lo[group], np.ones(group.size), np.zeros(group.size),
+                                               graded_toward(int(k), SLIP_PIECES), weight)
+        return out
+
+    def _strain_integral(self, lo: np.ndarray, hi: np.ndarray, hi_minus_one: np.ndarray,
+                         rule: tuple[np.ndarray, np.ndarray, np.ndarray], weight=None) -> np.ndarray:
+        """int_lo^hi weight(t) (H q - gamma p) dt for c <= lo < hi <= 1 (hi - 1 given exactly) by the rule
+        (s, 1 - s, w) on [0, 1] mapped onto each [lo, hi]; weight 1 if None."""
+        s, one_minus_s, w = rule
+        length = hi - lo
+        nodes = lo[:, None] + length[:, None] * s[None, :]
+        # t - 1 = (hi - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
+        from_one = hi_minus_one[:, None] - length[:, None] * one_minus_s[None, :]
         # nodes that round to c go to its slip side; nodes next to an element end inside the slip zone (single
         # basis functions' transforms are logarithmic there, and where the chart's anchor changes from c to 1 the
         # chart value of a node a few ulp off the end rounds to the end itself: u came out NaN at x = (1 + c)/2
@@ -153,6 +171,8 @@ class PlaneField:
             shift = np.where(np.abs(nodes - nearest) < NODE_CLEARANCE, shift, 0.0)
             nodes, from_one = nodes + shift, from_one + shift
         values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
+        if weight is not None:
+            values = values * weight(nodes, -from_one)
         return (values @ w) * length
 
 

@@ -145,6 +145,39 @@ class PlanePowerLawSolution:
         """q(x) = n x^(n-1) int_x^1 t^-n q0(t) dt (odd, + outward on the half-plane)."""
         return scalar_or_array(self._fields(x)[1])
 
+    def slip(self, x: ArrayLike) -> np.ndarray | float:
+        """u(x) = u_x G / ((1 - nu) P), P the present load, accumulated over the loading (odd, inward): each point
+        slipped while the stick-slip point grew past it, so the stick zone keeps u = C x^n ([S75] (3.4), (3.15) in
+        the plane): u = n x^n int_max(c, x)^1 t^(-n-1) u0(t) dt, u0 the strip punch's slip. On the solver's field by
+        parts, x^n [(x'^-n - 1) u0(x') + int_x'^1 (t^-n - 1) u0'(t) dt], x' = max(c, |x|), so that the strain u0' is
+        integrated once; on the closed forms (Sadowsky's u0 = -(gamma/pi) asin t, Abramov's 0) directly."""
+        x_arr = points(x)
+        ax = np.abs(x_arr).ravel()
+        f = self.flat.field
+        if isinstance(f, FullSlipField):
+            f.slip(ax)  # raises: not computed below the solver's smallest c
+        out = np.zeros(ax.shape)
+        inside = ax > 0.0
+        if np.any(inside):
+            if isinstance(f, NearLimitField):
+                f.check(ax)
+                (f1, f2), (w1, w2) = f.fields, f.weights
+                out[inside] = w1 * self._accumulated(f1, ax[inside]) + w2 * self._accumulated(f2, ax[inside])
+            elif isinstance(f, PlaneField):
+                out[inside] = self._accumulated(f, ax[inside])
+            else:
+                t, _, g = _edge_rule(ax[inside])
+                t = np.minimum(t, 1.0)  # (1 - u)(1 + u) may round a few ulp above 1 where u -> 0
+                out[inside] = self.n * ax[inside] ** self.n * (g * t ** (-self.n - 1.0) * f.slip(t)).sum(axis=1)
+        return scalar_or_array((np.sign(x_arr).ravel() * out).reshape(x_arr.shape))
+
+    def _accumulated(self, f: PlaneField, ax: np.ndarray) -> np.ndarray:
+        """n |x|^n int_x'^1 t^(-n-1) u0 dt on the solver's field, by parts (see ``slip``)."""
+        n = self.n
+        lo = np.maximum(ax, f.c)
+        tail = f.tail_strain_integrals(lo, lambda t, one_minus_t: t ** (-n) - 1.0)
+        return ax**n * ((lo ** (-n) - 1.0) * f.slip(lo) + tail)
+
     @property
     def load_factor(self) -> float:
         """K = (n/pi) int_0^1 p0 W_n: P = G a^n / ((1 - nu) K b^(n-1)) (2/pi frictionless at n = 2)."""

@@ -33,6 +33,13 @@ def test_cylinder_with_friction_scales_the_dimensionless_solution():
     assert M * c.half_width**2 / (h.load_factor * 0.005) == pytest.approx(1e5, rel=1e-13)
     assert c.centre_pressure == pytest.approx(1e5 / c.half_width * float(h.pressure(0.0)), rel=1e-13)
     assert c.half_width < c.frictionless_half_width  # friction stiffens the contact: smaller a at the same load
+    # the largest accumulated slip (bounded search to 1e-9 in x) against a grid of 2001 points over the slip zone:
+    # equal within the grid's resolution (the slip is flat at its extremum: (0.5 step)^2 u'' ~ 1e-7 relative)
+    import numpy as np
+    x = np.linspace(h.c, 1.0, 2001)
+    on_grid = float(np.min(h.slip(x))) * 1e5 / M
+    assert c.max_slip <= on_grid < 0.0 and c.max_slip == pytest.approx(on_grid, rel=1e-6)
+    assert h.c < c.max_slip_at / c.half_width < 1.0
 
 
 def test_strip_slip_and_sadowsky():

@@ -529,6 +529,9 @@ def _describe_line(s) -> str:
         ("slip at x = a" if s.shape == "strip" else "slip rate du/dP at x = a",
          slip(s.slip_edge), "", ""),
     ]
+    if s.shape == "cylinder":  # the slip accumulated over the loading (the strip's largest is the one at x = a)
+        rows.append(("max slip (accumulated)", unresolved if s.max_slip is None else
+                     f"{_si(s.max_slip, 'm')} at x = {_si(s.max_slip_at, 'm')}", "0 m", ""))
     width = max(len(r[1]) for r in rows) + 3
     lines = [f"{what}, {body}, on a half-space E = {_si(hs.E, 'Pa')}, nu = {hs.nu:g} (plane strain); mu = {s.mu:g}; "
              f"load {_si(s.load, 'N/m')}",

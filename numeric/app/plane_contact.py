@@ -24,9 +24,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import optimize
 
 from numeric.app.contact import Elastic, MaterialPair, positive
 from numeric.solutions.plane_law import FullSlipField
+from numeric.solutions.plane_near_limit import NearLimitField
 from numeric.solutions.plane_power_law import plane_power_law
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
@@ -39,7 +41,9 @@ class LineContact:
     """A plane-strain contact in SI units (lengths m, tractions Pa, load per length N/m).
 
     ``frictionless_*`` are the values without friction (Hertz's cylinder; Sadowsky's strip, whose a is the same).
-    ``slip_edge``: the slip at x = a (strip: m; cylinder: rate du/dP at x = a, m per N/m). The strip's pressure and
+    ``slip_edge``: the slip at x = a (strip: m; cylinder: rate du/dP at x = a, m per N/m); ``max_slip``: the largest
+    slip (m, at ``max_slip_at``): the strip's at its edges, the cylinder's accumulated over the loading, largest
+    inside the slip zones (``PlanePowerLawSolution.slip``). The strip's pressure and
     shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there. Below the solver's smallest stick
     half-width (c < 1e-5, small mu: ``numeric.solutions.plane_law``) the values that depend on the neighbourhood of
     the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None."""
@@ -59,6 +63,8 @@ class LineContact:
     max_shear: float | None
     max_shear_at: float | None
     slip_edge: float | None
+    max_slip: float | None
+    max_slip_at: float | None
     frictionless_half_width: float
     frictionless_max_pressure: float
     frictionless_centre_pressure: float
@@ -110,13 +116,29 @@ def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float
     p_h = 2.0 * P / (math.pi * a_h)
     if isinstance(h.flat.field, FullSlipField):  # the maxima lie in the unresolved neighbourhood of the stick zone
         return LineContact("cylinder", R, pair, float(mu), P, pair.gamma, h.c, a, h.c * a, None, None, None, None, None,
-                           None, a_h, p_h, p_h, h.flat.error, h.flat.route)
+                           None, None, None, a_h, p_h, p_h, h.flat.error, h.flat.route)
     pmax, pmax_at = _maximum(h.pressure, h.c)
     qmax, qmax_at = _maximum(lambda x: np.asarray(h.shear(x)), h.c)
     slip = float(h.flat.slip(1.0)) / M
+    umax, umax_at = _largest_slip(h)
     return LineContact("cylinder", R, pair, float(mu), P, pair.gamma, h.c, a, h.c * a, scale * pmax, pmax_at * a,
-                       scale * float(h.pressure(0.0)), sign * scale * qmax, qmax_at * a, sign * slip, a_h, p_h, p_h,
-                       h.flat.error, h.flat.route)
+                       scale * float(h.pressure(0.0)), sign * scale * qmax, qmax_at * a, sign * slip,
+                       sign * umax * P / M, umax_at * a, a_h, p_h, p_h, h.flat.error, h.flat.route)
+
+
+def _largest_slip(h) -> tuple[float, float]:
+    """The cylinder's largest accumulated slip (u <= 0, inward, on 0 < x < 1) and where: |u| = |C| x^n grows over the
+    stick zone and falls to 0 at the edge, so its largest value lies on [c, 1] (bounded scalar search, to 1e-9 in x;
+    from the resolved side where the field leaves the neighbourhood of c unresolved)."""
+    lo = h.c
+    if isinstance(h.flat.field, NearLimitField):
+        lo = h.flat.field.unresolved[1]
+    if h.c >= 1.0 or lo >= 1.0:
+        return 0.0, 1.0
+    found = optimize.minimize_scalar(lambda x: float(h.slip(x)), bounds=(lo, 1.0), method="bounded",
+                                     options={"xatol": 1e-9})
+    at = float(found.x) if float(h.slip(found.x)) <= float(h.slip(lo)) else lo
+    return float(h.slip(at)), at
 
 
 def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
@@ -132,4 +154,4 @@ def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: floa
     else:
         centre, slip = scale * float(s.pressure(0.0)), sign * float(s.slip(1.0)) * P / pair.modulus
     return LineContact("strip", a, pair, float(mu), P, pair.gamma, s.c, a, s.c * a, math.inf, a, centre, math.inf, a,
-                       slip, a, math.inf, P / (math.pi * a), s.error, s.route)
+                       slip, slip, None if slip is None else a, a, math.inf, P / (math.pi * a), s.error, s.route)

@@ -112,7 +112,9 @@ class StripPunchSolution:
         the difference from the resolution one degree lower, at least the rounding floor; 0 for closed forms. On
         the solver route it is formed when first read (a solve at the lower resolution, ``DeferredError``).
     route : str
-        "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns" or "limit mu -> inf ...".
+        "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns", "limit mu -> inf ...",
+        "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6) or
+        "full stick to within ..." (1 - c < 2^-40 at small gamma).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
 

@@ -195,8 +195,10 @@ FULL_STICK_GAP = 2.0**-40
 @lru_cache(maxsize=64)
 def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
     """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the
-    stick zone fills the contact to within 9.1e-13 (for gamma below the guess table's GAMMA_N, where c_max lies within
-    1e-12 of 1)."""
+    stick zone fills the contact to within 9.1e-13. For gamma below the guess table's GAMMA_N only, where c_max lies
+    within 1e-12 of 1 (above it c = 1 - 2^-40 may lie above c_max: ValueError)."""
+    if not 0.0 < gamma < GAMMA_N:
+        raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined below GAMMA_N = {GAMMA_N} only")
     return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
 
 

@@ -394,6 +394,16 @@ def table_given_c(c: np.ndarray, gamma: np.ndarray, gap: np.ndarray | None = Non
     return out
 
 
+@lru_cache(maxsize=256)
+def _log_mu_ends(name: str, gamma: float) -> tuple[float, float]:
+    """log mu at the ends of region ``name`` at gamma where it is least and greatest (x = -1, 1 in S; 1, -1 in N
+    and L, where log mu falls with x)."""
+    sign = 1.0 if _data().regions[name].coordinate == "logit_c" else -1.0
+    piece = _Slice(name, np.array([gamma]))
+    return (float(piece.log_mu(np.array([-sign]), slope=False)[0][0]),
+            float(piece.log_mu(np.array([sign]), slope=False)[0][0]))
+
+
 def table_given_mu(mu: np.ndarray, gamma: np.ndarray, quantities: tuple[str, ...] = QUANTITIES,
                    slopes: bool = False) -> TableValues:
     """The tabulated values for friction mu (nan outside the table's domain, and for the QUANTITIES not asked
@@ -419,8 +429,11 @@ def table_given_mu(mu: np.ndarray, gamma: np.ndarray, quantities: tuple[str, ...
         # log mu increases with x in S (u = logit c) and decreases in N and L (u = log 1 - c)
         sign = 1.0 if region.coordinate == "logit_c" else -1.0
         piece = _Slice(name, gamma[rows])
-        least = piece.log_mu(np.full(rows.size, -sign), slope=False)[0]
-        greatest = piece.log_mu(np.full(rows.size, sign), slope=False)[0]
+        if rows.size == 1:  # a scalar call: the region's ends in mu depend on gamma only (kept)
+            least, greatest = (np.array([v]) for v in _log_mu_ends(name, float(gamma[rows[0]])))
+        else:
+            least = piece.log_mu(np.full(rows.size, -sign), slope=False)[0]
+            greatest = piece.log_mu(np.full(rows.size, sign), slope=False)[0]
         low, high = least > target[rows], greatest < target[rows]  # below the region's least mu, above its greatest
         candidate[rows[~high]] = False  # answered here, or below the table (mu < mu(C_MIN): the law's)
         # only S has a lower end in mu; in N and L a mu a rounding below the end is the end's
@@ -433,6 +446,12 @@ def table_given_mu(mu: np.ndarray, gamma: np.ndarray, quantities: tuple[str, ...
         with np.errstate(divide="ignore", invalid="ignore"):  # start where log mu, linear between the ends, meets it
             start = sign * (2.0 * (goal - least[keep]) / (greatest[keep] - least[keep]) - 1.0)
         start = np.where(np.isfinite(start), np.clip(start, -0.999, 0.999), 0.0)
+        if region.coordinate == "log_gap_ratio":
+            # mu = F/(gamma w) with F (stored) smooth and finite at c_max (w = 0): w ~ F(c_max)/(gamma mu) starts
+            # Newton within F's variation of the root (it took 8-11 steps from the linear start near c_max)
+            stored_at_c_max = piece.value("eigen", np.full(rows.size, -1.0))
+            near = piece.x_of(stored_at_c_max / (piece.gamma * mu[rows]))
+            start = np.where(np.isfinite(near), np.clip(near, -0.999, 0.999), start)
 
         def f(x, piece=piece, goal=goal, sign=sign, scale=scale):
             value, slope = piece.log_mu(x)

@@ -20,6 +20,7 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from functools import cached_property, lru_cache
 
 import numpy as np
@@ -31,7 +32,10 @@ from numeric.core.plane_operators import PlaneOperators, normal_factor
 from numeric.core.quadrature import gauss_legendre
 
 __all__ = ["PlaneField", "SLIP_PIECES", "SLIP_PIECES_AT_C", "SLIP_NODES", "NODE_CLEARANCE", "graded_both_ends",
-           "graded_toward", "pieces_toward", "weighted_tail_integrals"]
+           "graded_toward", "pieces_toward", "weighted_tail_integrals", "Weight"]
+
+#: A weight of the tail integrals: weight(t, 1 - t), the second argument exact next to the edge.
+Weight = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
 SLIP_PIECES = 50
 """Graded pieces toward each end of [0, 1] in ``graded_both_ends`` (down to 2^-50 of its length), and toward x = 1
@@ -134,7 +138,7 @@ class PlaneField:
             out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(SLIP_PIECES_AT_C, int(k)))
         return (np.sign(x).ravel() * out).reshape(x.shape)
 
-    def tail_strain_integrals(self, lo: np.ndarray, weight) -> np.ndarray:
+    def tail_strain_integrals(self, lo: np.ndarray, weight: Weight) -> np.ndarray:
         """int_lo^1 weight(t) (H q - gamma p)(t) dt for c <= lo <= 1 (weight(t) smooth on [lo, 1]; 0 at lo = 1): graded
         toward 1 (the strain's (1 - t)^(alpha - 1/2)) and toward lo as far as lo is near c."""
         lo = np.asarray(lo, dtype=float).ravel()
@@ -149,7 +153,7 @@ class PlaneField:
         return out
 
     def _strain_integral(self, lo: np.ndarray, hi: np.ndarray, hi_minus_one: np.ndarray,
-                         rule: tuple[np.ndarray, np.ndarray, np.ndarray], weight=None) -> np.ndarray:
+                         rule: tuple[np.ndarray, np.ndarray, np.ndarray], weight: Weight | None = None) -> np.ndarray:
         """int_lo^hi weight(t) (H q - gamma p) dt for c <= lo < hi <= 1 (hi - 1 given exactly) by the rule
         (s, 1 - s, w) on [0, 1] mapped onto each [lo, hi]; weight 1 if None."""
         s, one_minus_s, w = rule
@@ -220,7 +224,7 @@ def pieces_toward(distance: np.ndarray) -> np.ndarray:
     return np.clip(np.nan_to_num(needed, posinf=SLIP_PIECES), 1, SLIP_PIECES).astype(int)
 
 
-def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight) -> tuple[np.ndarray, np.ndarray]:
+def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
     """int_x^1 weight(t) p(t) dt and int_x^1 weight(t) q(t) dt for 0 < x <= 1 (weight(t, 1 - t) smooth on (0, 1), e.g.
     t^-n, or with a logarithm at t = 1, which it evaluates from the exact 1 - t it is given).
 

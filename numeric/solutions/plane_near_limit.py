@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from numeric.core.plane_fields import PlaneField, weighted_tail_integrals
+from numeric.core.plane_fields import PlaneField, Weight, weighted_tail_integrals
 
 __all__ = ["NEAR_ZONE", "NearLimitField", "near_limit_field"]
 
@@ -77,7 +77,7 @@ class NearLimitField:
         self.check(np.abs(x).ravel())
         return self._combine(lambda f: f.slip(x))
 
-    def tail_integrals(self, x: np.ndarray, weight) -> tuple[np.ndarray, np.ndarray]:
+    def tail_integrals(self, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
         """``weighted_tail_integrals`` of the combination (linear in the field)."""
         (f1, f2), (w1, w2) = self.fields, self.weights
         (p1, q1), (p2, q2) = weighted_tail_integrals(f1, x, weight), weighted_tail_integrals(f2, x, weight)

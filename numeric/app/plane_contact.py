@@ -137,8 +137,8 @@ def _largest_slip(h) -> tuple[float, float]:
         return 0.0, 1.0
     found = optimize.minimize_scalar(lambda x: float(h.slip(x)), bounds=(lo, 1.0), method="bounded",
                                      options={"xatol": 1e-9})
-    at = float(found.x) if float(h.slip(found.x)) <= float(h.slip(lo)) else lo
-    return float(h.slip(at)), at
+    at_lo = float(h.slip(lo))
+    return (float(found.fun), float(found.x)) if found.fun <= at_lo else (at_lo, lo)
 
 
 def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,

@@ -18,7 +18,6 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -57,16 +56,13 @@ class NearLimitField:
                              f"c = {self.c!r}, where the solution at mu = {self.mu:g} (mu gamma beyond 1e6) is not "
                              f"resolved: the stresses are linear in 1/(mu gamma) only away from it")
 
-    def _combine(self, values: Callable[[PlaneField], np.ndarray]) -> np.ndarray:
-        (f1, f2), (w1, w2) = self.fields, self.weights
-        return w1 * values(f1) + w2 * values(f2)
-
     def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """p and q at -1 <= x <= 1: q combined, p combined on the stick zone and q/mu (Coulomb) on the slip zones."""
         x = np.asarray(x, dtype=float)
         self.check(np.abs(x).ravel())
-        p = self._combine(lambda f: f.pressure_shear(x)[0])
-        q = self._combine(lambda f: f.pressure_shear(x)[1])
+        (f1, f2), (w1, w2) = self.fields, self.weights
+        (p1, q1), (p2, q2) = f1.pressure_shear(x), f2.pressure_shear(x)
+        p, q = w1 * p1 + w2 * p2, w1 * q1 + w2 * q2
         slipping = np.abs(x) > self.c
         p = np.where(slipping, np.abs(q) / self.mu, p)
         return p, q
@@ -75,7 +71,8 @@ class NearLimitField:
         """u at -1 <= x <= 1, combined (0 on the stick zone)."""
         x = np.asarray(x, dtype=float)
         self.check(np.abs(x).ravel())
-        return self._combine(lambda f: f.slip(x))
+        (f1, f2), (w1, w2) = self.fields, self.weights
+        return w1 * f1.slip(x) + w2 * f2.slip(x)
 
     def tail_integrals(self, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
         """``weighted_tail_integrals`` of the combination (linear in the field)."""

@@ -212,11 +212,7 @@ def _run_physical(args) -> int:
         warnings.simplefilter("ignore", SmallStrainWarning)
         contact = indent(_shape(args), half, mu=args.mu, load=args.load, approach=args.approach, indenter=indenter,
                          level=args.level)
-    if args.json:
-        sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
-    else:
-        sys.stdout.write(_describe(contact))
-    return 0
+    return _write(contact, args.json, _describe)
 
 
 def _describe(s) -> str:
@@ -488,10 +484,12 @@ def _run_line_contact(args) -> int:
     press = press_cylinder if args.command == "cylinder" else press_strip
     size = args.radius if args.command == "cylinder" else args.half_width
     contact = press(size, half, mu=args.mu, load=args.load_per_length, indenter=indenter, level=args.level)
-    if args.json:
-        sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n")
-    else:
-        sys.stdout.write(_describe_line(contact))
+    return _write(contact, args.json, _describe_line)
+
+
+def _write(contact, as_json: bool, describe) -> int:
+    """The contact on standard output, as JSON (SI, ``to_dict``) or as ``describe``'s table; exit code 0."""
+    sys.stdout.write(json.dumps(contact.to_dict(), allow_nan=False) + "\n" if as_json else describe(contact))
     return 0
 
 

@@ -267,18 +267,38 @@ def power_cauchy(lam: float, y: np.ndarray) -> np.ndarray:
     right = y > 0.5
     if np.any(right):
         yr = y[right]
-        s1, w1 = product_rule(power_moments(lam, 30))
-        part1 = (0.25 ** (lam + 1.0)) * ((w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1))
-        s2, w2 = _quarter_to_one()
-        log_ratio = np.log(s2[None, :] / yr[:, None])
-        dd = yr[:, None] ** lam * lam * log_ratio * special.exprel(lam * log_ratio) / (s2[None, :] - yr[:, None])
-        dd = np.where(s2[None, :] == yr[:, None], lam * yr[:, None] ** (lam - 1.0), dd)
-        out[right] = part1 + dd @ w2 + yr**lam * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
+        out[right] = _power_near_zero(lam, yr) + _quarter_difference(lam, lam, yr) + yr**lam * _quarter_log(yr)
     left = y < -0.5
     if np.any(left):
-        s, w = product_rule(power_moments(lam, 40))
-        out[left] = (w[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
+        out[left] = _by_product_rule(power_moments(lam, 40), y[left])
     return out
+
+
+def _power_near_zero(lam: float, yr: np.ndarray) -> np.ndarray:
+    """int_0^(1/4) s^lam ds/(s - y) for y > 1/2: the product rule of s^lam (30 nodes), scaled to [0, 1/4]."""
+    s1, w1 = product_rule(power_moments(lam, 30))
+    return (0.25 ** (lam + 1.0)) * ((w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1))
+
+
+def _quarter_difference(exponent: float, factor: float, yr: np.ndarray) -> np.ndarray:
+    """factor int_(1/4)^1 (s^b - y^b) / (b (s - y)) ds, b = ``exponent``, for y > 1/2: the divided difference as
+    y^b log(s/y) exprel(b log(s/y)) / (s - y) (nothing cancels as b -> 0; y^(b - 1) at s = y), on 40 Gauss nodes."""
+    s2, w2 = _quarter_to_one()
+    log_ratio = np.log(s2[None, :] / yr[:, None])
+    dd = yr[:, None] ** exponent * factor * log_ratio * special.exprel(exponent * log_ratio) / (s2[None, :] - yr[:, None])
+    dd = np.where(s2[None, :] == yr[:, None], factor * yr[:, None] ** (exponent - 1.0), dd)
+    return dd @ w2
+
+
+def _quarter_log(yr: np.ndarray) -> np.ndarray:
+    """int_(1/4)^1 ds/(s - y) = log|(1 - y)/(1/4 - y)| for y > 1/2."""
+    return np.log(np.abs((1.0 - yr) / (0.25 - yr)))
+
+
+def _by_product_rule(moments: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """int_0^1 w(s) ds/(s - y) by the product rule of the weight whose Legendre moments are given (y off [0, 1])."""
+    s, w = product_rule(moments)
+    return (w[None, :] / (s[None, :] - y[:, None])).sum(axis=1)
 
 
 def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
@@ -306,15 +326,10 @@ def hbeta_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
         u, wh = product_rule(hbeta_moments(beta, 30))  # h_beta(u/4) = 4^-beta h_beta(u) + h_beta(1/4)
         w1 = 0.25 * (0.25**beta * wh + float(h_beta(beta, np.array(0.25))) * _projector(30)[1][:, 0])
         part1 = w1[None, :] @ (1.0 / (0.25 * u[:, None] - yr[None, :]))
-        s2, w2 = _quarter_to_one()
-        log_ratio = np.log(s2[None, :] / yr[:, None])
-        dd = yr[:, None] ** beta * log_ratio * special.exprel(beta * log_ratio) / (s2[None, :] - yr[:, None])
-        dd = np.where(s2[None, :] == yr[:, None], yr[:, None] ** (beta - 1.0), dd)
-        out[right] = part1[0] + dd @ w2 + h_beta(beta, yr) * np.log(np.abs((1.0 - yr) / (0.25 - yr)))
+        out[right] = part1[0] + _quarter_difference(beta, 1.0, yr) + h_beta(beta, yr) * _quarter_log(yr)
     left = y < -0.5
     if np.any(left):
-        s, w = product_rule(hbeta_moments(beta, 40))
-        out[left] = (w[None, :] / (s[None, :] - y[left][:, None])).sum(axis=1)
+        out[left] = _by_product_rule(hbeta_moments(beta, 40), y[left])
     return out
 
 
@@ -344,20 +359,13 @@ def mode_cauchy(beta: float, y: np.ndarray) -> np.ndarray:
     right = y > 0.5
     if np.any(right):
         yr = y[right]
-        s1, w1 = product_rule(power_moments(beta, 30))
-        inner = 0.25 ** (beta + 1.0) * (w1[None, :] / (0.25 * s1[None, :] - yr[:, None])).sum(axis=1)
-        part1 = (beta / yr) * inner - 0.25**beta / yr
-        s2, w2 = _quarter_to_one()
+        part1 = (beta / yr) * _power_near_zero(beta, yr) - 0.25**beta / yr
         lam = beta - 1.0
-        log_ratio = np.log(s2[None, :] / yr[:, None])
-        dd = yr[:, None] ** lam * lam * log_ratio * special.exprel(lam * log_ratio) / (s2[None, :] - yr[:, None])
-        dd = np.where(s2[None, :] == yr[:, None], lam * yr[:, None] ** (lam - 1.0), dd)
-        out[right] = part1 + beta * (dd @ w2 + yr**lam * np.log(np.abs((1.0 - yr) / (0.25 - yr))))
+        out[right] = part1 + beta * (_quarter_difference(lam, lam, yr) + yr**lam * _quarter_log(yr))
     left = y < -0.5
     if np.any(left):
         yl = y[left]
-        s, w = product_rule(power_moments(beta, 40))
-        out[left] = (beta / yl) * (w[None, :] / (s[None, :] - yl[:, None])).sum(axis=1) - 1.0 / yl
+        out[left] = (beta / yl) * _by_product_rule(power_moments(beta, 40), yl) - 1.0 / yl
     return out
 
 

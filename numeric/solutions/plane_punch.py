@@ -298,23 +298,24 @@ def plane_largest_stick_width(nu: float | None = None, *, gamma: float | None = 
     return plane_slip_limit(nu, gamma=gamma, level=level).c
 
 
+def _elementwise(values: np.ndarray, nu: ArrayLike, gamma: ArrayLike, solve) -> np.ndarray | float:
+    """solve(value, nu, gamma) at each pair of ``values`` and nu (or gamma), broadcast, as an array of their shape."""
+    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
+    v, o = np.broadcast_arrays(values, other)
+    out = np.array([solve(float(a), None if gamma is not None else float(b), None if gamma is None else float(b))
+                    for a, b in zip(v.ravel(), o.ravel())])
+    return scalar_or_array(out.reshape(v.shape))
+
+
 def plane_stick_width(mu: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
                       level: int = DEFAULT_LEVEL) -> np.ndarray | float:
     """c(mu, nu) of the strip punch (and of every power law |x|^n), elementwise over broadcast arrays."""
-    mu_arr = np.asarray(check_mu(mu), dtype=float)
-    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
-    m, o = np.broadcast_arrays(mu_arr, other)
-    out = np.array([strip_punch(nu=None if gamma is not None else float(b), gamma=None if gamma is None else float(b),
-                                mu=float(a), level=level).c for a, b in zip(m.ravel(), o.ravel())])
-    return scalar_or_array(out.reshape(m.shape))
+    return _elementwise(np.asarray(check_mu(mu), dtype=float), nu, gamma,
+                        lambda m, n, g: strip_punch(nu=n, gamma=g, mu=m, level=level).c)
 
 
 def plane_friction_coefficient(c: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
                                level: int = DEFAULT_LEVEL) -> np.ndarray | float:
     """mu(c, nu) of the strip punch, elementwise over broadcast arrays (NoEigenvalueError above c_max)."""
-    c_arr = np.asarray(check_c(c), dtype=float)
-    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
-    cc, o = np.broadcast_arrays(c_arr, other)
-    out = np.array([strip_punch(nu=None if gamma is not None else float(b), gamma=None if gamma is None else float(b),
-                                c=float(a), level=level).mu for a, b in zip(cc.ravel(), o.ravel())])
-    return scalar_or_array(out.reshape(cc.shape))
+    return _elementwise(np.asarray(check_c(c), dtype=float), nu, gamma,
+                        lambda cc, n, g: strip_punch(nu=n, gamma=g, c=cc, level=level).mu)

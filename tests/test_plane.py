@@ -207,11 +207,25 @@ def test_the_stresses_converge_at_c_and_next_to_the_edge(punch):
 
 
 def test_slip_integral_rule():
-    # the composite rule of the slip integral: exact for 1, s^-1/2 and (1-s)^-1/4, 1e-10 for (1-s)^-0.48 (the
-    # strain at mu gamma -> 0), measured 5e-14, 2e-16, 6e-14, 2e-12
-    s, om, w = graded_both_ends()
-    assert abs(w.sum() - 1.0) < 1e-14 and abs((w * s**-0.5).sum() - 2.0) < 1e-14
-    assert abs((w * om**-0.25).sum() - 4 / 3) < 1e-13 and abs((w * om**-0.48).sum() - 1 / 0.52) < 1e-10
+    # the composite rules of the slip integral (innermost pieces in s = h v^16, Christoffel weights): the strain's end
+    # behaviours s^lam, lam >= -1/2 ((1 - t)^(alpha - 1/2) at the edge, (t - c)^beta at c), log s and log^2 s, to
+    # rounding, on the fully graded rule and on the one with a single piece at each end (the slip at x = (1 + c)/2):
+    # measured <= 1.2e-15 relative; the sum of <= 1300 positive terms of a few ulp each, the weights a few ulp: 1e-14
+    from numeric.core.plane_fields import graded_toward, pieces_toward
+    for s, om, w in (graded_both_ends(), graded_toward(1, 1)):
+        for lam in (-0.5, -0.48, -0.25, 0.0, 0.3, 0.5):
+            assert abs((w * s**lam).sum() * (lam + 1) - 1.0) < 1e-14
+            assert abs((w * om**lam).sum() * (lam + 1) - 1.0) < 1e-14
+        assert abs((w * np.log(s)).sum() + 1.0) < 1e-14 and abs((w * np.log(om) ** 2).sum() - 2.0) < 1e-14
+    # a pole of order 2 a distance d beyond s = 0 (the weight t^-n at t = 0 behind lo = c, the strain's -c), graded as
+    # far as pieces_toward(d) says, times s^0.3: against 30-digit mpmath, measured 4.4e-16
+    with mpmath.workdps(30):
+        for d in (1e-2, 1e-5, 1e-9):
+            s, _, w = graded_toward(int(pieces_toward(np.array([d]))[0]), 1)
+            dm = mpmath.mpf(d)
+            ref = mpmath.quad(lambda t: t ** mpmath.mpf("0.3") / (t + dm) ** 2,
+                              [0] + [dm * mpmath.mpf(2) ** k for k in range(-6, 31) if dm * 2**k < 1] + [1])
+            assert abs((w * s**0.3 / (s + d) ** 2).sum() / float(ref) - 1.0) < 1e-14
 
 
 def test_first_order_law_error_is_order_gamma_squared():
@@ -427,7 +441,7 @@ def test_the_slip_converges(nu, c):
 
 @pytest.mark.parametrize("nu, c", [(0.45, 0.05), (0.0, 0.99), (-0.9, 0.5)])
 def test_the_slip_rule_graded_where_the_strain_is_singular_agrees_with_full_grading(nu, c):
-    # the slip integral grades toward c (SLIP_PIECES_AT_C pieces) and toward x only as far as x is near the edge
+    # the slip integral grades toward c as far as -c is near and toward x only as far as x is near the edge
     # (pieces_toward); against the rule graded fully toward both ends (SLIP_PIECES each) on the same solution: the
     # strain is smooth away from c and 1, so the two agree to rounding (measured 1e-15 of u ~ 0.03-0.17; the sum of
     # ~1000 terms of size |u| at a few ulp each bounds it by 1e-13)

@@ -99,14 +99,17 @@ def test_tiny_friction_underflows_to_zero():
 @pytest.mark.parametrize("nu", [0.3, -0.9])
 def test_full_slip_stresses_against_the_solver(nu):
     """The law route's stresses (full slip) against the solver's at c = 1e-5 with the same mu: within
-    alpha (c/x)^2 relative at |x| >= 100 c (measured 0.5 alpha (c/x)^2), and the cylinder's load factor (3.13)
-    within 1e-9 (measured 1e-11 ... 1e-10: the stick zone's share is of order c)."""
+    alpha (c/x)^2 relative at |x| >= 100 c (measured 0.5 alpha (c/x)^2) plus the solver's own spread at c = 1e-5
+    (levels 2, 3, 4 at nu = 0.3: up to 5e-11 relative at 1 - x = 1e-6 and 5e-12 at x <= 0.9, measured; a rounding
+    change in the element transforms moved the default level's p there by 1e-12 and its mu by 4e-10, the
+    conditioning at c = 1e-5: floor 1e-10), and the cylinder's load factor (3.13) within 1e-9 (measured 1e-11 ...
+    1e-10: the stick zone's share is of order c)."""
     c = C_SMALLEST
     s = plane.flat_punch(nu=nu, c=c)
     field = FullSlipField(s.gamma, s.mu, c)
     x = np.concatenate([c * np.geomspace(OUTER_FACTOR, 1e4, 7), [0.3, 0.9, 1 - 1e-6], -c * np.geomspace(100, 1e3, 3)])
     p, q = field.pressure_shear(x)
-    bound = field.alpha * (c / x) ** 2 + 1e-12
+    bound = field.alpha * (c / x) ** 2 + 1e-10
     assert np.all(np.abs(p / s.pressure(x) - 1.0) <= bound)
     assert np.all(np.abs(q / s.shear(x) - 1.0) <= bound)
     law = StripPunchSolution(s.nu, s.gamma, s.mu, c, 1.0 - c, 0.0, "test", 0.0, field)

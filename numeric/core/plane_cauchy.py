@@ -47,12 +47,11 @@ from functools import lru_cache
 import numpy as np
 from scipy import special
 
-from numeric.core.abel_rules import gauss01
 from numeric.core.charts import h_beta
-from numeric.core.quadrature import gauss_legendre
+from numeric.core.quadrature import christoffel_gauss01, gauss_legendre
 
 __all__ = ["PLAIN", "HBETA", "POWER", "Family", "FAR", "FAR_NODES", "FORWARD_GROWTH", "legendre_q01",
-           "legendre01", "power_moments", "hbeta_moments", "product_rule", "power_cauchy", "hbeta_cauchy", "family_weight", "family_cauchy",
+           "legendre01", "power_moments", "hbeta_moments", "product_rule", "power_cauchy", "hbeta_cauchy", "family_weight", "CauchyGeometry", "cauchy_geometry", "family_cauchy",
            "family_integrals", "family_values", "mode_cauchy"]
 
 PLAIN, HBETA, POWER = 0, 1, 2
@@ -118,13 +117,12 @@ def legendre_q01(y: np.ndarray, k: int) -> np.ndarray:
         out[forward] = q
         miller = ~forward
         if np.any(miller):
+            # one backward pass for all points, started as far above k as the point nearest the cut needs (the
+            # loop's cost is per step, not per point, at these sizes; more steps only shrink a point's truncation)
             idx = np.flatnonzero(miller.ravel())
-            steps = np.ceil(20.0 / np.log(rho.ravel()[idx])).astype(int) + 2
-            bucket = np.minimum(2 ** np.ceil(np.log2(steps)).astype(int), 4096)
+            steps = int(np.ceil(20.0 / np.log(rho.ravel()[idx].min()))) + 2
             flat = out.reshape(-1, k + 1)
-            for m in np.unique(bucket):
-                sel = idx[bucket == m]
-                flat[sel] = _miller(2.0 * y.ravel()[sel] - 1.0, k, int(m), flat[sel, 0])
+            flat[idx] = _miller(2.0 * y.ravel()[idx] - 1.0, k, min(steps, 4096), flat[idx, 0])
     return out
 
 
@@ -165,12 +163,10 @@ def hbeta_moments(beta: float, n: int) -> np.ndarray:
 @lru_cache(maxsize=None)
 def _projector(n: int) -> tuple[np.ndarray, np.ndarray]:
     """n-point Gauss-Legendre nodes s on [0, 1] and A[i, m] = w_i (2 m + 1) P_m(2 s_i - 1), m < n (read-only; A[:, 0]
-    are the weights). The weights as the Christoffel function 1/sum_m (2 m + 1) P_m(2 s_i - 1)^2 (a sum of positive
-    terms at the rounded node: 1e-13 relative, where ``leggauss``'s are off by 4e-13 at the end nodes, which a weight
-    singular there multiplies: 7e-14 in int s^(-1/2)/(s + 0.6) with 36 nodes, against 9e-16)."""
-    s = gauss01(n)[0]
-    a = (2.0 * np.arange(n) + 1.0)[None, :] * legendre01(n - 1, s)
-    a *= (1.0 / (a * legendre01(n - 1, s)).sum(axis=1))[:, None]
+    are the weights). The weights are ``christoffel_gauss01``'s (``leggauss``'s are off by 4e-13 at the end nodes, which
+    a weight singular there multiplies: 7e-14 in int s^(-1/2)/(s + 0.6) with 36 nodes, against 9e-16)."""
+    s, w = christoffel_gauss01(n)
+    a = w[:, None] * (2.0 * np.arange(n) + 1.0)[None, :] * legendre01(n - 1, s)
     a.setflags(write=False)
     return s, a
 
@@ -512,33 +508,78 @@ def _divided_differences(k: int, s: np.ndarray, y: np.ndarray, Py: np.ndarray) -
     return out
 
 
-def family_cauchy(family: Family, y: np.ndarray) -> np.ndarray:
-    """I_j(y) = PV int_0^1 w(s) P_j(2s - 1) ds / (s - y), j = 0 .. degree, for y not 0 or 1: shape y.shape + (degree + 1,)."""
+@dataclass(frozen=True, slots=True, eq=False)
+class CauchyGeometry:
+    """What ``family_cauchy`` needs at points y that does not depend on the family's parameter (the exponent alpha of
+    the solver's singular families): which rule each point takes, and the rules' kernels at the points. Formed once
+    per point set by ``cauchy_geometry``, it serves every exponent (the solver assembles two for each c).
+
+    inside: mask, P_j(y) and the divided differences D_j(s_n, y) at the product rule's nodes; far: mask and the
+    kernel 1/(s_n - y) at the lean rule's nodes; near (toward 0, toward 1): masks, the kernels at the outside
+    rule's nodes, and for the rule toward 1 log(1 + 2^-60/gap) (the piece it leaves out)."""
+
+    kind: int
+    degree: int
+    y: np.ndarray
+    inside: np.ndarray
+    legendre_inside: np.ndarray
+    differences: np.ndarray
+    far: np.ndarray
+    far_kernel: np.ndarray
+    near: tuple[np.ndarray, np.ndarray]
+    near_kernels: tuple[np.ndarray, np.ndarray]
+    left_out: np.ndarray
+
+
+def cauchy_geometry(kind: int, degree: int, y: np.ndarray) -> CauchyGeometry:
+    """The parameter-free part of ``family_cauchy`` for a weighted family (``HBETA`` or ``POWER``) of this degree."""
+    y = np.asarray(y, dtype=float)
+    k = degree
+    inside = (y > 0.0) & (y < 1.0)
+    far = (y < -FAR) | (y > 1.0 + FAR)
+    yi = y[inside]
+    Py = legendre01(k, yi)
+    s = _projector(k + 1)[0]  # the product rule's nodes (D_j has degree j - 1: exact)
+    D = _divided_differences(k, s[None, :], yi[:, None], Py[:, None, :])
+    far_kernel = 1.0 / (_projector(k + FAR_NODES)[0][None, :] - y[far][:, None])
+    masks, kernels = [], []
+    left_out = np.zeros(0)
+    for toward_one in (False, True):
+        near = ~inside & ~far & ((y > 1.0) if toward_one else (y < 0.0))
+        d = _outside_nodes(kind, k, toward_one)[1]
+        gap = (y[near] - 1.0) if toward_one else -y[near]  # distance from the end, exact (Sterbenz)
+        kernels.append(1.0 / (-(d[None, :] + gap[:, None]) if toward_one else (d[None, :] + gap[:, None])))
+        masks.append(near)
+        if toward_one:
+            left_out = np.log1p(2.0 ** -_PIECES / gap)
+    return CauchyGeometry(kind, k, y, inside, Py, D, far, far_kernel, (masks[0], masks[1]), (kernels[0], kernels[1]),
+                          left_out)
+
+
+def family_cauchy(family: Family, y: np.ndarray, geometry: CauchyGeometry | None = None) -> np.ndarray:
+    """I_j(y) = PV int_0^1 w(s) P_j(2s - 1) ds / (s - y), j = 0 .. degree, for y not 0 or 1: shape y.shape + (degree + 1,).
+
+    ``geometry``: ``cauchy_geometry`` of the family's kind and degree at these y, if formed already."""
     y = np.asarray(y, dtype=float)
     k = family.degree
     if family.kind == PLAIN:
         return -2.0 * legendre_q01(y, k)
+    g = cauchy_geometry(family.kind, k, y) if geometry is None else geometry
     out = np.empty(y.shape + (k + 1,))
-    inside = (y > 0.0) & (y < 1.0)
-    far = (y < -FAR) | (y > 1.0 + FAR)
-    if np.any(far):
-        s, ws = _lean_rule(family)
-        out[far] = (1.0 / (s[None, :] - y[far][:, None])) @ (ws[:, None] * _lean_legendre(k))
-    if np.any(inside):
-        yi = y[inside]
-        s, ws = product_rule(_family_moments(family, k + 1))  # D_j has degree j - 1: exact
-        Py = legendre01(k, yi)
-        D = _divided_differences(k, s[None, :], yi[:, None], Py[:, None, :])
+    if np.any(g.far):
+        ws = _lean_rule(family)[1]
+        out[g.far] = g.far_kernel @ (ws[:, None] * _lean_legendre(k))
+    if np.any(g.inside):
+        ws = product_rule(_family_moments(family, k + 1))[1]
+        yi = y[g.inside]
         V = power_cauchy(family.parameter, yi) if family.kind == POWER else hbeta_cauchy(family.parameter, yi)
-        out[inside] = np.einsum("n,pnk->pk", ws, D) + Py * V[:, None]
-    for toward_one in (False, True):
-        near = ~inside & ~far & ((y > 1.0) if toward_one else (y < 0.0))
+        out[g.inside] = np.einsum("n,pnk->pk", ws, g.differences) + g.legendre_inside * V[:, None]
+    for toward_one, near, kernel in zip((False, True), g.near, g.near_kernels):
         if np.any(near):
-            s, d, ws, P = _outside_rule(family, toward_one)
-            gap = (y[near] - 1.0) if toward_one else -y[near]  # distance from the end, exact (Sterbenz)
-            out[near] = (ws[None, :] / (-(d[None, :] + gap[:, None]) if toward_one else (d[None, :] + gap[:, None]))) @ P
+            _, _, ws, P = _outside_rule(family, toward_one)
+            out[near] = kernel @ (ws[:, None] * P)
             if toward_one:  # the piece [1 - 2^-60, 1] left out: w(1) P_j(1) int ds/(s - y) = -w(1) log(1 + h/gap)
-                out[near] -= float(family_weight(family, np.array(1.0))) * np.log1p(2.0 ** -_PIECES / gap)[:, None]
+                out[near] -= float(family_weight(family, np.array(1.0))) * g.left_out[:, None]
             if family.kind == HBETA and not toward_one:
                 out[near] += _innermost_hbeta(family.parameter, k, y[near])
     return out

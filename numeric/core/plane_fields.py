@@ -8,8 +8,9 @@ singular at c.
 The slip: with u = u_x G / ((1 - nu) P) (u_x the tangential surface displacement, P the load per
 unit length), du/dx = H q - gamma p (the tangential surface relation, ``asymptotics.plane``), which
 vanishes on the stick zone, so u(x) = int_c^x (H q - gamma p) dt on the slip zone; the integrand
-behaves like (t - c)^beta at c and (1 - t)^(alpha - 1/2) at 1, and is integrated by a composite
-Gauss rule graded toward both ends of [c, x] (``numeric.core.plane_cauchy``'s pieces of ratio 1/2).
+behaves like (t - c)^beta (and its logarithmic limit) at c and (1 - t)^(alpha - 1/2) at 1, and is integrated
+by a composite Gauss rule graded toward both ends of [c, x] (pieces of ratio 1/2) whose innermost piece is
+taken in s = h v^8, where those end behaviours become v^7 times a smooth function of v.
 
 References
 ----------
@@ -29,23 +30,28 @@ from numeric.core.plane_cauchy import family_values
 from numeric.core.plane_charts import AT_ONE, element_families, locate
 from numeric.core.plane_eigenvalue import PlaneEigensolution
 from numeric.core.plane_operators import PlaneOperators, normal_factor
-from numeric.core.quadrature import gauss_legendre
+from numeric.core.quadrature import christoffel_gauss01, gauss_legendre
 
-__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_PIECES_AT_C", "SLIP_NODES", "NODE_CLEARANCE", "graded_both_ends",
+__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "INNER_POWER", "INNER_NODES", "NODE_CLEARANCE", "graded_both_ends",
            "graded_toward", "pieces_toward", "weighted_tail_integrals", "Weight"]
 
 #: A weight of the tail integrals: weight(t, 1 - t), the second argument exact next to the edge.
 Weight = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
 SLIP_PIECES = 50
-"""Graded pieces toward each end of [0, 1] in ``graded_both_ends`` (down to 2^-50 of its length), and toward x = 1
-in the slip integral: the strain's (1 - t)^(alpha - 1/2)."""
-SLIP_PIECES_AT_C = 32
-"""Graded pieces toward c in the slip integral: the strain is bounded there ((t - c)^(1/2 - alpha) and the h_beta
-family's near-logarithm); 30 pieces agree with 50 to 1.4e-17 (25: 4e-16, 20: 1.4e-14) over 11 (nu, c) from
-nu = -0.9 to 0.49 and c = 0.05 to 0.9999 at x from c + 1e-9 (1 - c) to 1 (measured)."""
+"""Graded pieces toward each end of [0, 1] in ``graded_both_ends`` (down to 2^-50 of its length), and the most
+``pieces_toward`` gives."""
 SLIP_NODES = 12
 """Gauss nodes per piece (the pieces see the end singularities at >= 3 half-lengths: 5.83^-24)."""
+INNER_POWER = 16
+"""The innermost piece [0, h] of a graded half is integrated in v, s = h v^INNER_POWER: an end behaviour s^lam times a
+smooth function (lam >= -1/2: the strain's (1 - t)^(alpha - 1/2) at the edge, (t - c)^beta at c; also its logarithms)
+becomes v^(16 lam + 15) times a smooth function of v, at worst v^7."""
+INNER_NODES = 40
+"""Gauss nodes of the innermost piece in v: v^7 to 40^-16 (a Gauss error n^-(2 lam' + 2) for v^lam'); a pole a distance
+d >= h beyond s = 0 lies at v = (d/h)^(1/16) e^(i pi/16), rho >= 1.85 (1.85^-80 = 4e-22), the far end of the rule (s = 1,
+h <= 1/4) at v >= 4^(1/16), rho >= 1.81 (2.5e-21). (With v^8 and 24 nodes (1 - s)^-0.4 came out 9e-14 off.) The
+weights are ``christoffel_gauss01``'s: with ``leggauss``'s the rule integrated 1 to 1.2e-14."""
 NODE_CLEARANCE = 1e-13
 """Least distance of a slip-integral node from an element end inside the slip zone (see ``PlaneField.slip``)."""
 
@@ -121,7 +127,7 @@ class PlaneField:
         t = np.asarray(t, dtype=float)
         pts = locate(self.layout, t, offset_from_one=offset_from_one)
         ops = PlaneOperators(self.layout, pts)
-        T = ops.transforms(self.alpha)
+        T = ops.transforms(self.alpha, modes=False)
         return T.odd @ self._q - self.gamma * (T.values @ self._p)
 
     def slip(self, x: np.ndarray) -> np.ndarray:
@@ -130,26 +136,30 @@ class PlaneField:
         ax = np.abs(x).ravel()
         out = np.zeros(ax.shape)
         outer = np.flatnonzero(ax > self.c)
-        # the strain is singular at c and at 1 only: graded toward c always, toward x as far as x is near 1
-        pieces = pieces_toward((1.0 - ax[outer]) / (ax[outer] - self.c))
-        for k in np.unique(pieces):
-            group = outer[pieces == k]
+        # the strain is singular at c, at 1 and (through q's odd reflection) at -c: graded toward c as far as -c is
+        # near, toward x as far as x is near 1
+        length = ax[outer] - self.c
+        at_c = pieces_toward(2.0 * self.c / length)
+        at_x = pieces_toward((1.0 - ax[outer]) / length)
+        for kc, kx in set(zip(at_c.tolist(), at_x.tolist())):
+            group = outer[(at_c == kc) & (at_x == kx)]
             lo = np.full(group.size, self.c)
-            out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(SLIP_PIECES_AT_C, int(k)))
+            out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(kc, kx))
         return (np.sign(x).ravel() * out).reshape(x.shape)
 
     def tail_strain_integrals(self, lo: np.ndarray, weight: Weight) -> np.ndarray:
         """int_lo^1 weight(t) (H q - gamma p)(t) dt for c <= lo <= 1 (weight(t) smooth on [lo, 1]; 0 at lo = 1): graded
-        toward 1 (the strain's (1 - t)^(alpha - 1/2)) and toward lo as far as lo is near c."""
+        toward 1 (the strain's (1 - t)^(alpha - 1/2), one piece and the innermost) and toward lo as far as lo is near c
+        (or, at lo = c, as far as t = 0 is near: the weight may be singular there, and the strain is at -c)."""
         lo = np.asarray(lo, dtype=float).ravel()
         out = np.zeros(lo.shape)
         below = lo < 1.0
-        with np.errstate(divide="ignore"):
-            pieces = np.where(lo == self.c, SLIP_PIECES_AT_C, pieces_toward((lo - self.c) / np.where(below, 1.0 - lo, 1.0)))
+        length = np.where(below, 1.0 - lo, 1.0)
+        pieces = pieces_toward(np.where(lo == self.c, self.c, lo - self.c) / length)
         for k in np.unique(pieces[below]):
             group = np.flatnonzero(below & (pieces == k))
             out[group] = self._strain_integral(lo[group], np.ones(group.size), np.zeros(group.size),
-                                               graded_toward(int(k), SLIP_PIECES), weight)
+                                               graded_toward(int(k), 1), weight)
         return out
 
     def _strain_integral(self, lo: np.ndarray, hi: np.ndarray, hi_minus_one: np.ndarray,
@@ -182,7 +192,7 @@ class PlaneField:
 
 def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Composite Gauss on [0, 1]: pieces [2^-(j+1), 2^-j] toward 0 and toward 1 (j < SLIP_PIECES), the innermost
-    piece in sigma = sqrt(s) (the strain's worst end behaviour, (1 - t)^(alpha - 1/2), becomes smooth).
+    piece in v, s = h v^INNER_POWER (end behaviours s^lam, lam > -1, become smooth).
 
     Returns nodes s, their complements 1 - s (exact: next to 1 a double s would round 1 - s) and weights."""
     return graded_toward(SLIP_PIECES, SLIP_PIECES)
@@ -190,16 +200,15 @@ def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def _half(pieces: int) -> tuple[np.ndarray, np.ndarray]:
     """Nodes s in [0, 1/2] and weights: ``pieces`` pieces [lo, 2 lo], lo = 2^-2 ... 2^-(pieces + 1), and the innermost
-    [0, 2^-(pieces + 1)] in sigma = sqrt(s)."""
+    [0, 2^-(pieces + 1)] in v, s = h v^INNER_POWER (``INNER_NODES``)."""
     x, w = gauss_legendre(SLIP_NODES)
     lo = 0.5 ** np.arange(2, pieces + 2, dtype=float)  # pieces [lo, 2 lo] within [0, 1/2]
     s_half = ((1.5 * lo)[:, None] + (0.5 * lo)[:, None] * x[None, :]).ravel()
     w_half = ((0.5 * lo)[:, None] * w[None, :]).ravel()
-    # innermost [0, h]: s = h sigma^2, ds = 2 h sigma d sigma, Gauss-Legendre in sigma: exact for smooth integrands
-    # and for s^(-1/2) times smooth (the worst end behaviour), s^lam in between to ~n^-(4 lam + 4) of this piece
     h = 0.5 ** (pieces + 1)
-    sj, wj = 0.5 * (x + 1.0), 0.5 * w
-    return np.concatenate([h * sj * sj, s_half]), np.concatenate([2.0 * h * sj * wj, w_half])
+    v, wv = christoffel_gauss01(INNER_NODES)
+    m = INNER_POWER
+    return np.concatenate([h * v**m, s_half]), np.concatenate([m * h * v ** (m - 1) * wv, w_half])
 
 
 @lru_cache(maxsize=None)

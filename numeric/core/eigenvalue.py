@@ -84,10 +84,11 @@ class EigenSystem(Protocol):
 
 
 def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30
-                 ) -> tuple[float, np.ndarray, float]:
+                 ) -> tuple[float, np.ndarray, float, EquilibratedLU]:
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
-    Returns theta, z and the last step. Stops when a step is below tol relative, or once the
+    Returns theta, z, the last step and the last step's LU (of D at the last theta but one: its conditioning is
+    the root's). Stops when a step is below tol relative, or once the
     steps stop shrinking (at least fourfold) while below 1e-8 relative: Newton has reached the
     rounding floor of G, and the last step measures it."""
     previous = math.inf
@@ -109,9 +110,9 @@ def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_step
         size = abs(new - theta)
         if size <= 1e-9 * theta and previous == math.inf:  # first step from a close guess: the next is ~1e-18
             dz = -lu.solve(dD_z)
-            return new, z + (new - theta) * dz, size
+            return new, z + (new - theta) * dz, size, lu
         if size <= tol * theta or (size <= 1e-8 * theta and size >= 0.25 * previous):
-            return new, z, size
+            return new, z, size, lu
         if size > 0.5 * previous and size > 1e-6 * theta:
             raise SolverError(f"Newton in theta is not converging (step {step:.3g})")
         previous = size
@@ -171,7 +172,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
         outer += 1
         system = collocation_system(ops, gamma, theta / math.pi)
         try:
-            new, z, step = newton_theta(system, theta)
+            new, z, step, _ = newton_theta(system, theta)
         except SolverError:
             if bracketed:
                 raise

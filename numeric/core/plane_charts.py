@@ -80,7 +80,7 @@ class PlaneLayout:
 
     Element e is t = anchor + origin[e] + sigma[e] length[e] s, s in [0, 1] (anchor c or 1 by ``anchor[e]``);
     ``zone`` says whether it carries (p, q) (stick) or p with q = mu p (slip). ``starts[e]`` is the first
-    column of element e within its zone's block."""
+    column of element e within its zone's block; ``resolution`` is the one it was laid out at."""
 
     c: float
     gap: float
@@ -92,6 +92,7 @@ class PlaneLayout:
     length: np.ndarray
     degree: int
     singular_degree: int
+    resolution: PlaneResolution
 
     def __len__(self) -> int:
         return self.kind.size
@@ -163,7 +164,7 @@ def plane_layout(c: float, gap: float, res: PlaneResolution) -> PlaneLayout:
     els.append((EDGE, SLIP, AT_ONE, 0.0, -1.0, Le))
     kind, zone, anchor, origin, sigma, length = zip(*els)
     return PlaneLayout(c, gap, _frozen(kind, int), _frozen(zone, int), _frozen(anchor, int), _frozen(origin, float),
-                       _frozen(sigma, float), _frozen(length, float), res.degree, res.singular_degree)
+                       _frozen(sigma, float), _frozen(length, float), res.degree, res.singular_degree, res)
 
 
 def element_families(lay: PlaneLayout, e: int, alpha: float) -> tuple[Family, ...]:

@@ -58,6 +58,7 @@ class PlaneEigensolution:
     last_step: float  # the last Newton step in theta, or secant step in logit c
     slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution, where the iteration had it
     linearised: LinearisedPlaneSystem | None = None  # the linearised system that gave it (then dG/dtheta on demand)
+    conditioning: float = math.nan  # 1-norm condition number of the equilibrated D at the root, where Newton had it
 
     @property
     def layout(self) -> PlaneLayout:
@@ -123,12 +124,12 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     step = max(EXPONENT_STEP, spread)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
-        new, z, last = newton_theta(system, theta)
+        new, z, last, lu = newton_theta(system, theta)
         moved = abs(new - theta)
         if not 0.0 < new < THETA_MAX:
             break
         if moved <= OUTER_TOLERANCE * new:
-            return PlaneEigensolution(system.at(new), ops, new, z, last, math.nan, system)
+            return PlaneEigensolution(system.at(new), ops, new, z, last, math.nan, system, lu.condition())
         theta, step = new, max(EXPONENT_STEP, moved / new)
     raise SolverError(f"the linearised iteration did not settle for c = {c}, gamma = {gamma}")
 
@@ -140,7 +141,8 @@ def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolu
     if system is None or theta == solution.theta:
         return solution
     z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
-    return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta), math.nan, system)
+    return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta), math.nan, system,
+                              solution.conditioning)
 
 
 def slope_along(solution: PlaneEigensolution) -> float:

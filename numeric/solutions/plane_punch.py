@@ -112,7 +112,9 @@ class StripPunchSolution:
         the difference from the resolution one degree lower, at least the rounding floor; 0 for closed forms. On
         the solver route it is formed when first read (a solve at the lower resolution, ``DeferredError``).
     route : str
-        "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns", "limit mu -> inf ...",
+        "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns" (or "solver level L (alternate
+        layout), ...": the level's layout was near a pole of the eigen functional, ``numeric.solutions.plane_solver.
+        CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6) or
         "full stick to within ..." (1 - c < 2^-40 at small gamma).
     residual : float
@@ -163,7 +165,8 @@ def _level(level: int) -> int:
 
 def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError, level: int, mu: float | None = None,
                 route: str | None = None) -> StripPunchSolution:
-    route = route or f"solver level {level}, {fine.n_unknowns} unknowns"
+    alternate = fine.layout.resolution.c_fraction != PLANE_LEVELS[level].c_fraction
+    route = route or f"solver level {level}{' (alternate layout)' if alternate else ''}, {fine.n_unknowns} unknowns"
     return StripPunchSolution(nu, fine.gamma, fine.mu if mu is None else mu, fine.c, fine.gap, error, route,
                               fine.residual, fine)
 

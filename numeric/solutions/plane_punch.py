@@ -205,13 +205,16 @@ def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
     return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
 
 
-def _full_stick(mu: float, gamma: float, level: int) -> bool:
-    """Whether 1 - c < FULL_STICK_GAP for mu: asked only beyond the guess table toward full stick at small gamma."""
+def _beyond_table_toward_full_stick(mu: float, gamma: float) -> bool:
+    """Whether mu lies beyond the guess table toward full stick (small gamma only)."""
     if gamma >= GAMMA_N or float(stick_width_first_order(mu, gamma)) < 0.5:
         return False
-    if stick_width_guess(math.atan(mu * gamma), gamma) is not None:
-        return False
-    return mu >= full_stick_friction(gamma, level)
+    return stick_width_guess(math.atan(mu * gamma), gamma) is None
+
+
+def _full_stick(mu: float, gamma: float, level: int) -> bool:
+    """Whether 1 - c < FULL_STICK_GAP for mu: asked only beyond the guess table toward full stick at small gamma."""
+    return _beyond_table_toward_full_stick(mu, gamma) and mu >= full_stick_friction(gamma, level)
 
 
 def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
@@ -276,7 +279,8 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
-    solve = solve_given_mu(mu, g, level)
+    anchor = (full_stick_friction(g, level), FULL_STICK_GAP) if _beyond_table_toward_full_stick(mu, g) else None
+    solve = solve_given_mu(mu, g, level, anchor)
     return _from_field(nu, solve.field, solve.error, level, mu)
 
 

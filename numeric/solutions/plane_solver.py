@@ -40,10 +40,11 @@ from numeric.core.plane_eigenvalue import (PlaneEigensolution, partner_shift_the
                                            plane_given_c, plane_given_c_linearised, plane_given_theta)
 from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_fit, stick_width_guess, theta_guess
-from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS
+from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS, GAP_N as GUESS_GAP_N
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "solve_given_c", "solve_given_mu",
+           "near_full_stick_gap",
            "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA", "THETA_SCATTER"]
 
 #: Levels 0-4 (degree 12, 15, 18, 21, 24; h_beta times quadratics at c). Measured at five (nu, c) (nu = 0.25, 0.3,
@@ -173,6 +174,21 @@ def solve_limit(gamma: float, level: int) -> PlaneSolve:
                       tuple(zip(LIMIT_MU_GAMMA, gaps, fields)))
 
 
+def near_full_stick_gap(mu: float, gamma: float, mu_full: float, gap_full: float) -> float | None:
+    """1 - c for mu between the guess table's end toward full stick (1 - c = GAP_N, small gamma) and a solve at
+    (mu_full, gap_full) nearer full stick: log(1 - c) interpolated linearly in log mu (near full stick 1 - c falls
+    like a power of mu: at nu = 0.45 log10(1 - c) = -7.17, -9.18, -10.83, -12.04 at mu = 0.6, 0.8, 1.0, 1.18, slopes
+    -6.9, -7.5, -7.4 in log10 mu); None where mu is not between them or the table gives no end value."""
+    guess = theta_guess(1.0 - GUESS_GAP_N, GUESS_GAP_N, gamma)
+    if guess is None:
+        return None
+    mu_end = math.tan(guess.theta) / gamma
+    if not mu_end < mu < mu_full:
+        return None
+    t = (math.log(mu) - math.log(mu_end)) / (math.log(mu_full) - math.log(mu_end))
+    return math.exp(math.log(GUESS_GAP_N) + t * (math.log(gap_full) - math.log(GUESS_GAP_N)))
+
+
 def _gap_error(fine: PlaneField, shift: float) -> float:
     """|change of 1 - c| for a change ``shift`` of logit c (d(1 - c) = -c (1 - c) d xi), at least the rounding floor."""
     return max(abs(fine.c * fine.gap * shift), ROUNDING_FLOOR * min(fine.c, fine.gap))
@@ -187,11 +203,13 @@ THETA_SCATTER = 5e-11
 C_SMALLEST = 1e-5
 
 
-def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
+def solve_given_mu(mu: float, gamma: float, level: int, full_stick: tuple[float, float] | None = None) -> PlaneSolve:
     """The stick half-width for friction mu at ``level``: where the table reaches, given-c solves from its c
     (``guided_steps``; the error: the partner's theta at the last c, turned into c by the slope, plus the step not
     taken), else the secant in logit c (the error: the partner's G over the secant's slope); formed when first read.
-    ValueError where the guess puts c below ``C_SMALLEST``."""
+    ``full_stick``: (mu, 1 - c) of a solve nearer full stick than the table reaches (small gamma), from which and
+    the table's end the secant starts (``near_full_stick_gap``). ValueError where the guess puts c below
+    ``C_SMALLEST``."""
     res = PLANE_LEVELS[level]
     theta = math.atan(mu * gamma)
     found = stick_width_guess(theta, gamma)
@@ -219,6 +237,9 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
                          f"below {C_SMALLEST:g}, outside the solver's range (first-order law: c ~ 4 exp(-pi gamma/(2 mu)))")
     gap_max = gap_fit(gamma)
     gap = max(1.0 - c, 2.0 * gap_max)
+    between = None if found is not None or full_stick is None else near_full_stick_gap(mu, gamma, *full_stick)
+    if between is not None:
+        gap = between
     c = min(c, 1.0 - gap)
     xi = math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)
     solution = plane_given_theta(theta, gamma, xi, res, step=1e-3)

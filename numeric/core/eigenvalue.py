@@ -83,17 +83,17 @@ class EigenSystem(Protocol):
     def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray: ...
 
 
-def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30
-                 ) -> tuple[float, np.ndarray, float, EquilibratedLU]:
+def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30,
+                 conditioning: bool = False) -> tuple[float, np.ndarray, float, EquilibratedLU]:
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
     Returns theta, z, the last step and the last step's LU (of D at the last theta but one: its conditioning is
-    the root's). Stops when a step is below tol relative, or once the
+    the root's; ``EquilibratedLU.condition`` if ``conditioning``). Stops when a step is below tol relative, or once the
     steps stop shrinking (at least fourfold) while below 1e-8 relative: Newton has reached the
     rounding floor of G, and the last step measures it."""
     previous = math.inf
     for _ in range(max_steps):
-        lu = EquilibratedLU(system.matrix(theta))
+        lu = EquilibratedLU(system.matrix(theta), conditioning)
         z = lu.solve(system.rhs)
         l = system.functional(theta)
         y = lu.solve_transposed(l)

@@ -124,7 +124,7 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     step = max(EXPONENT_STEP, spread)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
-        new, z, last, lu = newton_theta(system, theta)
+        new, z, last, lu = newton_theta(system, theta, conditioning=True)
         moved = abs(new - theta)
         if not 0.0 < new < THETA_MAX:
             break

@@ -80,16 +80,21 @@ def _mu(theta: float, gamma: float) -> float:
 GUESS_SPREAD = max(1e-9, *(GUESS_ERRORS or {"": 1e-3}).values())
 
 
-#: A layout whose system is this ill-conditioned at its root (1-norm, equilibrated; ``PlaneEigensolution.conditioning``)
-#: where 1 - c >= ``CONDITION_CHECK_GAP`` is solved again in the layout with ``ALTERNATE_C_FRACTION``, and the better
-#: conditioned of the two kept (if better by ``CONDITION_GAIN``). The discrete system is singular at isolated theta
-#: (poles of G); where one lies near the root the root loses digits. Measured at level 2 over 75 random (nu, c) with
-#: 1e-3 < c < c_max and at nu = -1/2, 0.9 <= c <= 0.935: conditioning 7e10 ... 2e12 where mu is within 1e-11 of the
-#: median of four finer solves; where it is off by 1e-10 ... 4e-8 (nu = -1/2, c = 0.91 ... 0.935; nu = -0.008,
-#: c = 0.17) 3.4e12 ... 1.8e15, and 2e11 ... 1.8e12 in the layout with c_fraction 0.1, which brings mu within 6e-12.
-#: Below 1 - c = 1e-3 conditioning grows for every layout (1e13 ... 1e16 at 1 - c = 1e-4 ... 1e-9) and is not a signal.
-CONDITION_LIMIT = 3e12
+#: A layout whose system is ill-conditioned at its root beyond this (gamma^2 times the 1-norm condition number of the
+#: equilibrated D, ``PlaneEigensolution.conditioning``) where c >= ``CONDITION_CHECK_C`` and 1 - c >=
+#: ``CONDITION_CHECK_GAP`` is solved again in the layout with ``ALTERNATE_C_FRACTION``, and the better conditioned of
+#: the two kept (if better by ``CONDITION_GAIN``). The discrete system is singular at isolated theta (poles of G);
+#: where one lies near the root the root loses digits. Conditioning also grows like gamma^-2 as the coupling weakens
+#: (8e10, 1.1e12, 2.6e12, 5.5e12 at c = 0.5, nu = -1/2, 0, 1/4, 0.45, all good to 1e-11), hence the factor. Measured
+#: at level 2 over 75 random (nu, c) with 1e-3 < c < c_max and at nu = -1/2, 0.9 <= c <= 0.935: gamma^2 x conditioning
+#: up to 7e11 where mu is within 2e-11 of the median of four finer solves; 1.5e12 ... 8e14 where it is off by 3e-10
+#: ... 4e-8 (nu = -1/2, c = 0.91 ... 0.935; nu = -0.008, c = 0.17), where the layout with c_fraction 0.1 is 5 ... 25
+#: times better conditioned and brings mu within 6e-12. Below 1 - c = 1e-3 conditioning grows for every layout (1e13
+#: ... 1e16 at 1 - c = 1e-4 ... 1e-9), and below c = 1e-2 too (1e12 ... 1e14 at c = 3e-3 ... 1e-3, the round-off
+#: that grows like 1/c): there it is not a signal.
+CONDITION_LIMIT = 1e12
 CONDITION_CHECK_GAP = 1e-3
+CONDITION_CHECK_C = 1e-2
 ALTERNATE_C_FRACTION = 0.1
 CONDITION_GAIN = 3.0
 
@@ -100,7 +105,7 @@ def _given_c(c: float, gap: float, gamma: float, res: PlaneResolution, theta: fl
     pole of G (``CONDITION_LIMIT``), in the alternate layout if it is better conditioned; the solution's layout says
     which (``layout.resolution``)."""
     solution = _solve_in(c, gap, gamma, res, theta)
-    if gap >= CONDITION_CHECK_GAP and solution.conditioning > CONDITION_LIMIT:
+    if c >= CONDITION_CHECK_C and gap >= CONDITION_CHECK_GAP and gamma * gamma * solution.conditioning > CONDITION_LIMIT:
         other = _solve_in(c, gap, gamma, replace(res, c_fraction=ALTERNATE_C_FRACTION), solution.theta)
         if other.conditioning * CONDITION_GAIN < solution.conditioning:
             return other

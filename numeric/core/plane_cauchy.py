@@ -51,8 +51,9 @@ from numeric.core.charts import h_beta
 from numeric.core.quadrature import christoffel_gauss01, gauss_legendre
 
 __all__ = ["PLAIN", "HBETA", "POWER", "Family", "FAR", "FAR_NODES", "FORWARD_GROWTH", "legendre_q01",
-           "legendre01", "power_moments", "hbeta_moments", "product_rule", "power_cauchy", "hbeta_cauchy", "family_weight", "CauchyGeometry", "cauchy_geometry", "family_cauchy",
-           "family_integrals", "family_values", "mode_cauchy"]
+           "legendre01", "power_moments", "hbeta_moments", "product_rule", "power_cauchy", "hbeta_cauchy",
+           "family_weight", "CauchyGeometry", "cauchy_geometry", "family_cauchy", "family_integrals", "family_values",
+           "mode_cauchy"]
 
 PLAIN, HBETA, POWER = 0, 1, 2
 """Weights of a family: 1, h_beta(s), s^lam."""

@@ -20,7 +20,8 @@ H p(x) = H b(x) - H b(-x) and H q(x) = H b(x) + H b(-x) for a basis function b
 
 What does not depend on alpha (every Legendre family: the plain elements and the regular families of
 the elements at c) is formed once per layout and point set (``PlaneOperators``); the h_beta family at
-c and the edge family s^(alpha - 1/2) are formed per alpha.
+c and the edge family s^(alpha - 1/2) are formed per alpha, on their rules' parameter-free geometry
+(``numeric.core.plane_cauchy.CauchyGeometry``), formed at the first alpha and kept for the next.
 
 The eigenvalue condition is phi(c-) = 0, phi = p - q/mu, the two-dimensional (2.13): without it the
 stick side carries (c - x)^(-1/2 - alpha). In the basis phi = a + h_beta(0) b at c- (a: the regular part,

@@ -127,12 +127,15 @@ def test_error_covers_the_round_off_at_small_c(nu, c, scatter):
 @pytest.mark.slow
 @pytest.mark.parametrize("nu", [-0.5, 0.0, 0.3, 0.45])
 def test_error_covers_the_round_off_at_small_c_everywhere(nu):
+    # at small c every level sits at the solver's round-off (~1/c), level 4 included: the difference of two levels is
+    # bounded by the sum of their estimates, not by the coarser one's alone (at nu = -1/2, c = 1e-3 level 2 is 4.5e-13
+    # from level 4, its own estimate 4.1e-13 and level 4's 4.4e-13: the reference is no better than the level)
     g = float(gamma_from_nu(nu))
     for c in (1e-5, 3e-5, 1e-4, 3e-4, 1e-3):
         s4 = solve_given_c(nu, c, g, 4)
         for level in (2, 3):
             s = solve_given_c(nu, c, g, level)
-            assert abs(s.mu - s4.mu) <= s.error
+            assert abs(s.mu - s4.mu) <= s.error + s4.error
 
 
 @pytest.mark.parametrize("ratio", [0.5, 1.0, 3.0])

@@ -152,8 +152,25 @@ def test_fast_p4_against_the_quadrature(c):
 
 
 @pytest.mark.slow
-def test_table_regenerates_identically():
-    # deterministic build (fixed nodes, fixed seed, deterministic quadratures); ~15 minutes
-    committed = (ROOT / "asymptotics" / "second_order_data.py").read_text(encoding="utf-8")
-    subprocess.run([sys.executable, str(ROOT / "derivations" / "build_second_order.py")], check=True)
-    assert (ROOT / "asymptotics" / "second_order_data.py").read_text(encoding="utf-8") == committed
+def test_table_regenerates():
+    # the build (fixed nodes, fixed seed) reproduces the committed table to the rounding of its quadratures: bitwise
+    # it did not (the series moved by 2e-15 of their largest coefficient for f2, 9e-15 for P4, on this machine, and
+    # so the recorded worst error 1.98e-13 -> 2.04e-13), so each series is compared to 1e-13 of its largest
+    # coefficient (the quadratures' tolerance is 1e-11 relative; the series carry their rounding, not that) and the
+    # recorded errors to 20 %; the committed file is put back afterwards. About 40 s.
+    target = ROOT / "asymptotics" / "second_order_data.py"
+    committed = target.read_text(encoding="utf-8")
+    try:
+        subprocess.run([sys.executable, str(ROOT / "derivations" / "build_second_order.py")], check=True)
+        rebuilt = target.read_text(encoding="utf-8")
+    finally:
+        target.write_text(committed, encoding="utf-8")
+    old, new = {}, {}
+    exec(committed, old)
+    exec(rebuilt, new)
+    assert old["PIECES"] == new["PIECES"]
+    for name in ("F2_RATIO", "P2", "P4"):
+        a, b = np.array(old[name], dtype=float), np.array(new[name], dtype=float)
+        assert a.shape == b.shape and np.max(np.abs(a - b)) <= 1e-13 * np.max(np.abs(a)), name
+    for name in ("F2_RELATIVE_ERROR", "P2_ERROR", "P4_ERROR"):
+        assert new[name] == pytest.approx(old[name], rel=0.2), name

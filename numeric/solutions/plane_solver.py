@@ -49,8 +49,9 @@ __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "sol
 
 #: Levels 0-4 (degree 12, 15, 18, 21, 24; h_beta times quadratics at c). Measured at five (nu, c) (nu = 0.25, 0.3,
 #: 0.45; c = 0.05 ... 0.65) against the median of degrees 26 and 28 in two layouts (``numeric.studies.plane_bench``):
-#: mu to 2e-9 ... 7e-7, 7e-11 ... 1e-9, 8e-14 ... 1e-11, 1e-13 ... 6e-12 and 6e-13 ... 5e-10 relative; level 4 meets
-#: the layout's near-redundancy at nu = 0.25 (5e-10, its estimate 5e-10). ``tests/test_plane.py`` checks the default
+#: mu to 2e-9 ... 7e-7, 7e-11 ... 1e-9, 8e-14 ... 1e-11, 1e-13 ... 6e-12 and 6e-13 ... 5e-10 relative; level 4's layout
+#: meets a pole of G near the root at nu = 0.25 (5e-10, its estimate 5e-10), where the route now takes the alternate
+#: layout (``CONDITION_LIMIT``; 4e-13). ``tests/test_plane.py`` checks the default
 #: level against six solves of degrees 20-28 and the levels' table is in ``derivations/plane_strain.md``.
 PLANE_LEVELS: tuple[PlaneResolution, ...] = tuple(PlaneResolution(degree=d, singular_degree=2) for d in (12, 15, 18, 21, 24))
 DEFAULT_LEVEL = 2

@@ -106,7 +106,8 @@ def _given_c(c: float, gap: float, gamma: float, res: PlaneResolution, theta: fl
     pole of G (``CONDITION_LIMIT``), in the alternate layout if it is better conditioned; the solution's layout says
     which (``layout.resolution``)."""
     solution = _solve_in(c, gap, gamma, res, theta)
-    if c >= CONDITION_CHECK_C and gap >= CONDITION_CHECK_GAP and gamma * gamma * solution.conditioning > CONDITION_LIMIT:
+    if (res.c_fraction != ALTERNATE_C_FRACTION and c >= CONDITION_CHECK_C and gap >= CONDITION_CHECK_GAP
+            and gamma * gamma * solution.conditioning > CONDITION_LIMIT):
         other = _solve_in(c, gap, gamma, replace(res, c_fraction=ALTERNATE_C_FRACTION), solution.theta)
         if other.conditioning * CONDITION_GAIN < solution.conditioning:
             return other
@@ -221,9 +222,15 @@ def solve_given_mu(mu: float, gamma: float, level: int, full_stick: tuple[float,
     found = stick_width_guess(theta, gamma)
     if found is not None and found[0] >= C_SMALLEST:
         c, gap, guess = found
+        layout = [res]  # the steps stay in the layout the first solve chose (a pole of G near one step is near all)
+
+        def step(c: float, gap: float) -> PlaneEigensolution:
+            solution = _given_c(c, gap, gamma, layout[0], theta)
+            layout[0] = solution.layout.resolution
+            return solution
+
         try:
-            last, slope, remaining = guided_steps(theta, c, gap, guess.slope,
-                                                  lambda c, gap: _given_c(c, gap, gamma, res, theta), lambda s: s.theta,
+            last, slope, remaining = guided_steps(theta, c, gap, guess.slope, step, lambda s: s.theta,
                                                   theta_noise=THETA_SCATTER * theta)
         except SolverError:
             last = None

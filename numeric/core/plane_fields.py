@@ -81,6 +81,7 @@ class PlaneField:
         self._p[sys.slip_columns] = normal_factor(self.theta) * R
         self._q[sys.slip_columns] = (math.sin(self.theta) / self.gamma) * R
         self._starts = solution.operators.starts
+        self._last_points: tuple | None = None  # (points, (p, q)) of the last ``pressure_shear``
 
     @property
     def mu(self) -> float:
@@ -107,8 +108,19 @@ class PlaneField:
         return out
 
     def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """p(x) and q(x) for -1 <= x <= 1 (p even, q odd; x = c is the stick side's value, continuous there)."""
+        """p(x) and q(x) for -1 <= x <= 1 (p even, q odd; x = c is the stick side's value, continuous there). The
+        last points' values are kept: a caller asking for p and then q at the same x (as the solution's ``pressure``
+        and ``shear`` do) evaluates the basis once."""
         x = np.asarray(x, dtype=float)
+        key = (x.shape, x.tobytes())
+        if self._last_points is not None and self._last_points[0] == key:
+            p, q = self._last_points[1]
+            return p.copy(), q.copy()
+        p, q = self._pressure_shear(x)
+        self._last_points = (key, (p.copy(), q.copy()))
+        return p, q
+
+    def _pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         ax = np.abs(x).ravel()
         B = self._basis_values(ax)
         with np.errstate(invalid="ignore"):

@@ -402,6 +402,30 @@ def test_a_layout_near_a_pole_of_g_gives_way_to_the_alternate(nu, c):
     assert s.error >= abs(s.mu - reference_mu(nu, c))
 
 
+def test_rtol_chooses_the_coarsest_level_that_meets_it():
+    # as the axisymmetric flat_punch: the coarsest level whose typical accuracy meets rtol, finer while error >
+    # rtol x mu (given c) or c (given mu). Against the median of four finer solves (``reference_mu``): at nu = 0.3,
+    # c = 0.5 level 0 is 2.5e-9 off (its estimate 6.5e-9) and level 1 2.3e-11 (estimate 1.4e-10), measured
+    from numeric.solutions.solution import AccuracyWarning
+    from numeric.studies.plane_bench import reference_mu
+    ref = reference_mu(0.3, 0.5)
+    for rtol, level in ((1e-6, 0), (1e-8, 1), (1e-10, 2)):
+        s = plane.flat_punch(nu=0.3, c=0.5, rtol=rtol)
+        assert s.route.startswith(f"solver level {level}") and s.error <= rtol * s.mu
+        assert abs(s.mu - ref) <= rtol * ref
+    back = plane.flat_punch(nu=0.3, mu=ref, rtol=1e-6)
+    assert back.error <= 1e-6 * back.c and abs(back.c - 0.5) <= 1e-6 * 0.5
+    assert plane.power_law(2, nu=0.3, c=0.5, rtol=1e-6).flat.route.startswith("solver level 0")
+    with pytest.warns(AccuracyWarning, match="rtol = 1e-12 not met"):
+        plane.flat_punch(nu=0.3, c=0.5, rtol=1e-12)  # below the estimate's floor, 1e-10
+    assert plane.flat_punch(nu=0.3, mu=0.0, rtol=1e-14).error == 0.0  # a closed form meets any rtol
+    with pytest.raises(ValueError, match="not both"):
+        plane.flat_punch(nu=0.3, c=0.5, level=2, rtol=1e-6)
+    for bad in (0.0, -1e-6, math.nan, math.inf):
+        with pytest.raises(ValueError, match="rtol"):
+            plane.flat_punch(nu=0.3, c=0.5, rtol=bad)
+
+
 def test_the_error_is_formed_on_demand_and_pickled_with_its_value():
     import pickle
     s = plane.flat_punch(nu=0.3, c=0.5)

@@ -40,7 +40,6 @@ from numeric.core.plane_fields import PlaneField, graded_both_ends, weighted_tai
 from numeric.solutions.plane_law import FullSlipField
 from numeric.solutions.plane_near_limit import NearLimitField
 from numeric.solutions.plane_punch import StripPunchSolution, points, strip_punch
-from numeric.solutions.plane_solver import DEFAULT_LEVEL
 
 __all__ = ["PlanePowerLawSolution", "plane_power_law", "load_weight", "load_factor_frictionless"]
 
@@ -202,11 +201,13 @@ class PlanePowerLawSolution:
 
 
 def plane_power_law(n: float, *, nu: float | None = None, gamma: float | None = None, mu: float | None = None,
-                    c: float | None = None, level: int = DEFAULT_LEVEL) -> PlanePowerLawSolution:
-    """Profile |X|^n (n = 2: the cylinder) with friction: the same c as the strip punch (exactly one of mu, c).
+                    c: float | None = None, level: int | None = None, rtol: float | None = None
+                    ) -> PlanePowerLawSolution:
+    """Profile |X|^n (n = 2: the cylinder) with friction: the same c as the strip punch (exactly one of mu, c), whose
+    ``level`` (default 2) or ``rtol`` (on mu or c, ``strip_punch``) it takes.
 
     >>> h = plane_power_law(2, nu=0.3, mu=0.0)
     >>> round(float(h.pressure(0.6)), 12) == round(1.6 / math.pi, 12)   # Hertz: (2/pi) sqrt(1 - x^2)
     True
     """
-    return PlanePowerLawSolution(check_n(n), strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=level))
+    return PlanePowerLawSolution(check_n(n), strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=level, rtol=rtol))

@@ -20,6 +20,7 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -36,12 +37,13 @@ from numeric.core.plane_guess import gap_max, stick_width_guess
 from numeric.core.plane_guess_data import GAMMA_N
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
-from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, LIMIT_MU_GAMMA, PLANE_LEVELS, solve_given_c,
-                                            solve_given_mu, solve_limit)
-from numeric.solutions.solution import DeferredError
+from numeric.solutions.flat_punch import check_rtol
+from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
+                                            solve_given_c, solve_given_mu, solve_limit)
+from numeric.solutions.solution import DeferredError, warn_unmet
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
-           "plane_largest_stick_width", "points", "FULL_STICK_GAP", "full_stick_friction", "ABOVE_C_MAX"]
+           "plane_largest_stick_width", "points", "FULL_STICK_GAP", "full_stick_friction", "ABOVE_C_MAX", "RTOL_START"]
 
 
 def points(x: ArrayLike) -> np.ndarray:
@@ -157,6 +159,32 @@ class StripPunchSolution:
         return self._field
 
 
+#: The typical relative accuracy of mu at levels 0-4 (``numeric.solutions.plane_solver.PLANE_LEVELS``, measured up to
+#: 7e-7, 1e-9, 1e-11, 6e-12, 5e-10 at five (nu, c); the estimate is floored at ``ROUNDING_FLOOR``, 1e-10): rtol
+#: starts at the first level listed at or below it.
+RTOL_START = (1e-6, 1e-8, ROUNDING_FLOOR)
+
+
+def _meeting(rtol: float, run: Callable[[int], StripPunchSolution], value: Callable[[StripPunchSolution], float]
+             ) -> StripPunchSolution:
+    """The first level from ``RTOL_START`` on whose ``error`` is within rtol of ``value``; else the most accurate, with
+    an ``AccuracyWarning``. Below the estimate's floor only the default level runs (no level can show more); a
+    route that is not the solver's (closed forms, the small-c law, full stick, near the limit) runs once."""
+    start = next((lv for lv, typical in enumerate(RTOL_START) if typical <= rtol), DEFAULT_LEVEL)
+    levels = range(start, len(PLANE_LEVELS)) if rtol >= ROUNDING_FLOOR else (DEFAULT_LEVEL,)
+    best = None
+    for lv in levels:
+        s = run(lv)
+        if s.error <= rtol * value(s):
+            return s
+        if best is None or s.error < best.error:
+            best = s
+        if not s.route.startswith("solver"):
+            break
+    warn_unmet(best, rtol, value(best))
+    return best
+
+
 def _level(level: int) -> int:
     if not isinstance(level, int) or isinstance(level, bool) or not 0 <= level < len(PLANE_LEVELS):
         raise ValueError(f"level must be an integer from 0 to {len(PLANE_LEVELS) - 1}, got {level!r}")
@@ -225,12 +253,16 @@ def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float)
 
 
 def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: float | None = None,
-                c: float | None = None, level: int = DEFAULT_LEVEL) -> StripPunchSolution:
+                c: float | None = None, level: int | None = None, rtol: float | None = None) -> StripPunchSolution:
     """The flat strip punch with friction: give exactly one of ``mu`` and ``c``, and ``nu`` or ``gamma``.
 
     mu = 0 is Sadowsky's frictionless punch, mu = inf or c = 1 Abramov's fully stuck one (closed forms);
-    otherwise the singular-basis solver at ``level`` (0-4), with the level one degree lower as error estimate.
-    c above the largest stick width c_max(gamma) raises ``NoEigenvalueError``.
+    otherwise the singular-basis solver at ``level`` (0-4, default 2), with the level one degree lower as error
+    estimate. c above the largest stick width c_max(gamma) raises ``NoEigenvalueError``.
+
+    ``rtol`` (instead of ``level``): the coarsest level whose typical accuracy meets it (``RTOL_START``), then finer
+    ones while ``error`` exceeds rtol times mu (given c) or c (given mu); if none does (the estimate's floor is 1e-10
+    relative), the most accurate result with an ``AccuracyWarning``. Reading ``error`` costs a second solve.
 
     Examples
     --------
@@ -238,8 +270,14 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     >>> round(s.mu, 10), s.error < 1e-10
     (0.2374025972, True)
     """
+    if rtol is not None:
+        if level is not None:
+            raise ValueError("give level or rtol, not both (rtol chooses the level)")
+        rtol = check_rtol(rtol)
+        value = (lambda s: s.mu) if c is not None else (lambda s: s.c)
+        return _meeting(rtol, lambda lv: strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=lv), value)
     g = resolve_gamma(None if nu is None else float(check_nu(nu)), gamma)
-    level = _level(level)
+    level = _level(DEFAULT_LEVEL if level is None else level)
     if (mu is None) == (c is None):
         raise ValueError("give exactly one of mu (friction coefficient) or c (stick half-width / a)")
     nu = None if nu is None else float(nu)

@@ -135,7 +135,9 @@ def _plane(bench: Benchmark) -> list[str]:
              "counterpart of the paper's scheme at its resolution, and the law route below c = 1e-5. The first ratio "
              "is to the plane scheme at h = 0.02 timed here, the second to the axisymmetric solver's same task in the "
              "table above; the error is of mu (given c) or 1 - c (given mu) against the median of degrees 26 and 28 "
-             "(two layouts, `numeric.studies.plane_bench.reference_mu`; at nu = 0.25 level 4 is 5e-10 off).", "",
+             "(two layouts, `numeric.studies.plane_bench.reference_mu`; not level 4, whose own layout is 5e-10 off at "
+             "nu = 0.25, c = 0.5, a pole of the eigen functional near the root). Where a layout is near such a pole the "
+             "route solves again in a second one ('alternate layout'), as at nu = -1/2, c = 0.93 here.", "",
              "| task | time, ms | ratio to the plane scheme | ratio to the axisymmetric task | worst error | points | "
              "reference |", "|---|---|---|---|---|---|---|"]
     for s in bench.plane:

@@ -416,6 +416,9 @@ def test_rtol_chooses_the_coarsest_level_that_meets_it():
     back = plane.flat_punch(nu=0.3, mu=ref, rtol=1e-6)
     assert back.error <= 1e-6 * back.c and abs(back.c - 0.5) <= 1e-6 * 0.5
     assert plane.power_law(2, nu=0.3, c=0.5, rtol=1e-6).flat.route.startswith("solver level 0")
+    # the elementwise functions pass it on (level 0 within 1e-6 of the reference, as above)
+    assert abs(plane.friction_coefficient(0.5, 0.3, rtol=1e-6) / ref - 1) <= 1e-6
+    assert abs(plane.stick_radius(ref, 0.3, rtol=1e-6) / 0.5 - 1) <= 1e-6
     with pytest.warns(AccuracyWarning, match="rtol = 1e-12 not met"):
         plane.flat_punch(nu=0.3, c=0.5, rtol=1e-12)  # below the estimate's floor, 1e-10
     assert plane.flat_punch(nu=0.3, mu=0.0, rtol=1e-14).error == 0.0  # a closed form meets any rtol

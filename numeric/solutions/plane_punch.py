@@ -352,15 +352,17 @@ def _elementwise(values: np.ndarray, nu: ArrayLike, gamma: ArrayLike, solve) -> 
     return scalar_or_array(out.reshape(v.shape))
 
 
-def plane_stick_width(mu: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
-                      level: int = DEFAULT_LEVEL) -> np.ndarray | float:
-    """c(mu, nu) of the strip punch (and of every power law |x|^n), elementwise over broadcast arrays."""
+def plane_stick_width(mu: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None, level: int | None = None,
+                      rtol: float | None = None) -> np.ndarray | float:
+    """c(mu, nu) of the strip punch (and of every power law |x|^n), elementwise over broadcast arrays; ``level`` or
+    ``rtol`` as ``strip_punch`` takes them."""
     return _elementwise(np.asarray(check_mu(mu), dtype=float), nu, gamma,
-                        lambda m, n, g: strip_punch(nu=n, gamma=g, mu=m, level=level).c)
+                        lambda m, n, g: strip_punch(nu=n, gamma=g, mu=m, level=level, rtol=rtol).c)
 
 
 def plane_friction_coefficient(c: ArrayLike, nu: ArrayLike = None, *, gamma: ArrayLike = None,
-                               level: int = DEFAULT_LEVEL) -> np.ndarray | float:
-    """mu(c, nu) of the strip punch, elementwise over broadcast arrays (NoEigenvalueError above c_max)."""
+                               level: int | None = None, rtol: float | None = None) -> np.ndarray | float:
+    """mu(c, nu) of the strip punch, elementwise over broadcast arrays (NoEigenvalueError above c_max); ``level`` or
+    ``rtol`` as ``strip_punch`` takes them."""
     return _elementwise(np.asarray(check_c(c), dtype=float), nu, gamma,
-                        lambda cc, n, g: strip_punch(nu=n, gamma=g, c=cc, level=level).mu)
+                        lambda cc, n, g: strip_punch(nu=n, gamma=g, c=cc, level=level, rtol=rtol).mu)

@@ -555,7 +555,7 @@ def test_full_stick_to_double_precision_at_small_gamma():
     # nu = 0.45 (gamma = 1/11), mu = 3: 1 - c ~ 1e-40 by the first-order law, far below what c can show; the solver
     # failed (SolverError). Above the friction at 1 - c = 2^-40 = 9.1e-13 the bonded punch is returned, c = 1 - 2^-41
     # +- 2^-41: its stresses against the solver's at 1 - c = 1e-12 were measured within 3.3e-12 (p), 3.8e-12 (q)
-    from numeric.solutions.plane_punch import FULL_STICK_GAP, full_stick_friction
+    from numeric.solutions.plane_solver import FULL_STICK_GAP, full_stick_friction
     g = 1 / 11
     s = plane.flat_punch(nu=0.45, mu=3.0)
     assert s.route.startswith("full stick") and 0 < s.gap <= s.error and s.gap + s.error <= FULL_STICK_GAP
@@ -575,8 +575,7 @@ def test_between_the_table_and_full_stick_the_secant_starts_near_the_root():
     # first-order law's start was 3 orders off and the secant took 16 solves instead of 8); bound 25 %. The answer
     # satisfies the eigenvalue condition at mu: the given-c solve at that 1 - c (passed exactly: c itself rounds 1 - c
     # by 1e-6 relative here, which moves mu by 4e-8) returns mu within its error.
-    from numeric.solutions.plane_punch import FULL_STICK_GAP, full_stick_friction
-    from numeric.solutions.plane_solver import near_full_stick_gap, solve_given_c
+    from numeric.solutions.plane_solver import FULL_STICK_GAP, full_stick_friction, near_full_stick_gap, solve_given_c
     g = 1 / 11
     s = plane.flat_punch(nu=0.45, mu=0.9)
     start = near_full_stick_gap(0.9, g, full_stick_friction(g), FULL_STICK_GAP)

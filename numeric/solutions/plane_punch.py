@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -33,17 +32,17 @@ from asymptotics.plane import bonded_traction, pressure_sadowsky, stick_width_fi
 
 from numeric.core.errors import NoEigenvalueError
 from numeric.core.plane_fields import PlaneField
-from numeric.core.plane_guess import gap_max, stick_width_guess
-from numeric.core.plane_guess_data import GAMMA_N
+from numeric.core.plane_guess import gap_max
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
 from numeric.solutions.flat_punch import check_rtol
-from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
+from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS,
+                                            ROUNDING_FLOOR, beyond_table_toward_full_stick, full_stick_friction,
                                             solve_given_c, solve_given_mu, solve_limit)
-from numeric.solutions.solution import DeferredError, warn_unmet
+from numeric.solutions.solution import DeferredError, meets, warn_unmet
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
-           "plane_largest_stick_width", "points", "FULL_STICK_GAP", "full_stick_friction", "ABOVE_C_MAX", "RTOL_START"]
+           "plane_largest_stick_width", "points", "ABOVE_C_MAX", "RTOL_START"]
 
 
 def points(x: ArrayLike) -> np.ndarray:
@@ -175,7 +174,7 @@ def _meeting(rtol: float, run: Callable[[int], StripPunchSolution], value: Calla
     best = None
     for lv in levels:
         s = run(lv)
-        if s.error <= rtol * value(s):
+        if meets(s, rtol, value(s)):
             return s
         if best is None or s.error < best.error:
             best = s
@@ -216,33 +215,9 @@ def _below_solver(mu: float, gamma: float, level: int) -> bool:
     return first_order < C_SMALLEST or mu < law_friction_coefficient(C_SMALLEST, gamma, level)[0]
 
 
-#: Given mu, 1 - c below this (2^-40 = 9.1e-13: c = 1 - 2^-40 is a double and gives this gap back exactly) is
-#: answered as full stick (the stresses of the bonded punch were measured within 3.3e-12 (p) and 3.8e-12 (q) of the
-#: solver's at 1 - c = 1e-12, nu = 0.45; the solver itself took seconds below it and failed further down, where c is
-#: 1 to double precision).
-FULL_STICK_GAP = 2.0**-40
-
-
-@lru_cache(maxsize=64)
-def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
-    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the
-    stick zone fills the contact to within 9.1e-13. For gamma below the guess table's GAMMA_N only, where c_max lies
-    within 1e-12 of 1 (above it c = 1 - 2^-40 may lie above c_max: ValueError)."""
-    if not 0.0 < gamma < GAMMA_N:
-        raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined below GAMMA_N = {GAMMA_N} only")
-    return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
-
-
-def _beyond_table_toward_full_stick(mu: float, gamma: float) -> bool:
-    """Whether mu lies beyond the guess table toward full stick (small gamma only)."""
-    if gamma >= GAMMA_N or float(stick_width_first_order(mu, gamma)) < 0.5:
-        return False
-    return stick_width_guess(math.atan(mu * gamma), gamma) is None
-
-
 def _full_stick(mu: float, gamma: float, level: int) -> bool:
     """Whether 1 - c < FULL_STICK_GAP for mu: asked only beyond the guess table toward full stick at small gamma."""
-    return _beyond_table_toward_full_stick(mu, gamma) and mu >= full_stick_friction(gamma, level)
+    return beyond_table_toward_full_stick(mu, gamma) and mu >= full_stick_friction(gamma, level)
 
 
 def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
@@ -317,8 +292,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
-    anchor = (full_stick_friction(g, level), FULL_STICK_GAP) if _beyond_table_toward_full_stick(mu, g) else None
-    solve = solve_given_mu(mu, g, level, anchor)
+    solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 
 

@@ -40,11 +40,11 @@ from numeric.core.plane_eigenvalue import (PlaneEigensolution, partner_shift_the
                                            plane_given_c, plane_given_c_linearised, plane_given_theta)
 from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_fit, stick_width_guess, theta_guess
-from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS, GAP_N as GUESS_GAP_N
+from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS, GAMMA_N, GAP_N as GUESS_GAP_N
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "solve_given_c", "solve_given_mu",
-           "near_full_stick_gap",
+           "near_full_stick_gap", "FULL_STICK_GAP", "full_stick_friction", "beyond_table_toward_full_stick",
            "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA", "THETA_SCATTER"]
 
 #: Levels 0-4 (degree 12, 15, 18, 21, 24; h_beta times quadratics at c). Measured at five (nu, c) (nu = 0.25, 0.3,
@@ -210,13 +210,36 @@ THETA_SCATTER = 5e-11
 C_SMALLEST = 1e-5
 
 
-def solve_given_mu(mu: float, gamma: float, level: int, full_stick: tuple[float, float] | None = None) -> PlaneSolve:
+#: Given mu, 1 - c below this (2^-40 = 9.1e-13: c = 1 - 2^-40 is a double and gives this gap back exactly) is
+#: answered as full stick (the stresses of the bonded punch were measured within 3.3e-12 (p) and 3.8e-12 (q) of the
+#: solver's at 1 - c = 1e-12, nu = 0.45; the solver itself took seconds below it and failed further down, where c is
+#: 1 to double precision).
+FULL_STICK_GAP = 2.0**-40
+
+
+@lru_cache(maxsize=64)
+def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
+    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the
+    stick zone fills the contact to within 9.1e-13. For gamma below the guess table's GAMMA_N only, where c_max lies
+    within 1e-12 of 1 (above it c = 1 - 2^-40 may lie above c_max: ValueError)."""
+    if not 0.0 < gamma < GAMMA_N:
+        raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined below GAMMA_N = {GAMMA_N} only")
+    return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
+
+
+def beyond_table_toward_full_stick(mu: float, gamma: float) -> bool:
+    """Whether mu lies beyond the guess table toward full stick (small gamma only)."""
+    if gamma >= GAMMA_N or float(stick_width_first_order(mu, gamma)) < 0.5:
+        return False
+    return stick_width_guess(math.atan(mu * gamma), gamma) is None
+
+
+def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
     """The stick half-width for friction mu at ``level``: where the table reaches, given-c solves from its c
     (``guided_steps``; the error: the partner's theta at the last c, turned into c by the slope, plus the step not
     taken), else the secant in logit c (the error: the partner's G over the secant's slope); formed when first read.
-    ``full_stick``: (mu, 1 - c) of a solve nearer full stick than the table reaches (small gamma), from which and
-    the table's end the secant starts (``near_full_stick_gap``). ValueError where the guess puts c below
-    ``C_SMALLEST``."""
+    Between the table's end toward full stick and ``full_stick_friction`` (small gamma) the secant starts from
+    ``near_full_stick_gap``. ValueError where the guess puts c below ``C_SMALLEST``."""
     res = PLANE_LEVELS[level]
     theta = math.atan(mu * gamma)
     found = stick_width_guess(theta, gamma)
@@ -250,9 +273,9 @@ def solve_given_mu(mu: float, gamma: float, level: int, full_stick: tuple[float,
                          f"below {C_SMALLEST:g}, outside the solver's range (first-order law: c ~ 4 exp(-pi gamma/(2 mu)))")
     gap_max = gap_fit(gamma)
     gap = max(1.0 - c, 2.0 * gap_max)
-    between = None if found is not None or full_stick is None else near_full_stick_gap(mu, gamma, *full_stick)
-    if between is not None:
-        gap = between
+    if found is None and beyond_table_toward_full_stick(mu, gamma):
+        between = near_full_stick_gap(mu, gamma, full_stick_friction(gamma, level), FULL_STICK_GAP)
+        gap = gap if between is None else between
     c = min(c, 1.0 - gap)
     xi = math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)
     solution = plane_given_theta(theta, gamma, xi, res, step=1e-3)

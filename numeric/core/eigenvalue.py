@@ -30,7 +30,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Protocol, TypeVar
+from typing import NamedTuple, Protocol, TypeVar
 
 import numpy as np
 from scipy import optimize
@@ -40,7 +40,7 @@ from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
-__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
+__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
            "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE"]
 
 HALF_PI = 0.5 * math.pi
@@ -83,12 +83,22 @@ class EigenSystem(Protocol):
     def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray: ...
 
 
+class NewtonRoot(NamedTuple):
+    """``newton_theta``'s result: the root, z there, the last step, and the last step's LU and dG/dtheta (both at the
+    last theta but one, within the last step of the root: its conditioning and slope are the root's)."""
+
+    theta: float
+    coefficients: np.ndarray
+    last_step: float
+    lu: EquilibratedLU
+    slope: float
+
+
 def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30,
-                 conditioning: bool = False) -> tuple[float, np.ndarray, float, EquilibratedLU]:
+                 conditioning: bool = False) -> NewtonRoot:
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
-    Returns theta, z, the last step and the last step's LU (of D at the last theta but one: its conditioning is
-    the root's; ``EquilibratedLU.condition`` if ``conditioning``). Stops when a step is below tol relative, or once the
+    Returns a ``NewtonRoot`` (``EquilibratedLU.condition`` of its LU if ``conditioning``). Stops when a step is below tol relative, or once the
     steps stop shrinking (at least fourfold) while below 1e-8 relative: Newton has reached the
     rounding floor of G, and the last step measures it."""
     previous = math.inf
@@ -110,9 +120,9 @@ def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_step
         size = abs(new - theta)
         if size <= 1e-9 * theta and previous == math.inf:  # first step from a close guess: the next is ~1e-18
             dz = -lu.solve(dD_z)
-            return new, z + (new - theta) * dz, size, lu
+            return NewtonRoot(new, z + (new - theta) * dz, size, lu, float(dG))
         if size <= tol * theta or (size <= 1e-8 * theta and size >= 0.25 * previous):
-            return new, z, size, lu
+            return NewtonRoot(new, z, size, lu, float(dG))
         if size > 0.5 * previous and size > 1e-6 * theta:
             raise SolverError(f"Newton in theta is not converging (step {step:.3g})")
         previous = size
@@ -172,7 +182,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
         outer += 1
         system = collocation_system(ops, gamma, theta / math.pi)
         try:
-            new, z, step, _ = newton_theta(system, theta)
+            new, z, step = newton_theta(system, theta)[:3]
         except SolverError:
             if bracketed:
                 raise

@@ -37,7 +37,7 @@ from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocatio
                                           plane_collocation_system)
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
-           "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "slope_along", "ALPHA_TOLERANCE",
+           "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
            "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX"]
 
 HALF_PI = 0.5 * math.pi
@@ -57,7 +57,7 @@ class PlaneEigensolution:
     coefficients: np.ndarray
     last_step: float  # the last Newton step in theta, or secant step in logit c
     slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution, where the iteration had it
-    linearised: LinearisedPlaneSystem | None = None  # the linearised system that gave it (then dG/dtheta on demand)
+    linearised: LinearisedPlaneSystem | None = None  # the linearised system that gave it (for the system at another theta)
     conditioning: float = math.nan  # 1-norm condition number of the equilibrated D at the root, where Newton had it
 
     @property
@@ -124,12 +124,14 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     step = max(EXPONENT_STEP, spread)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
-        new, z, last, lu = newton_theta(system, theta, conditioning=True)
+        root = newton_theta(system, theta, conditioning=True)
+        new = root.theta
         moved = abs(new - theta)
         if not 0.0 < new < THETA_MAX:
             break
         if moved <= OUTER_TOLERANCE * new:
-            return PlaneEigensolution(system.at(new), ops, new, z, last, math.nan, system, lu.condition())
+            return PlaneEigensolution(system.at(new), ops, new, root.coefficients, root.last_step, root.slope, system,
+                                      root.lu.condition())
         theta, step = new, max(EXPONENT_STEP, moved / new)
     raise SolverError(f"the linearised iteration did not settle for c = {c}, gamma = {gamma}")
 
@@ -141,19 +143,8 @@ def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolu
     if system is None or theta == solution.theta:
         return solution
     z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
-    return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta), math.nan, system,
-                              solution.conditioning)
-
-
-def slope_along(solution: PlaneEigensolution) -> float:
-    """dG/dtheta along alpha = theta/pi at the solution: the iteration's, or (linearised) one LU of its system."""
-    if math.isfinite(solution.slope) or solution.linearised is None:
-        return solution.slope
-    system, theta = solution.linearised, solution.theta
-    lu = EquilibratedLU(system.matrix(theta))
-    z = lu.solve(system.rhs)
-    y = lu.solve_transposed(system.functional(theta))
-    return float(system.functional_derivative(theta) @ z - y @ system.derivative_times(theta, z))
+    return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta),
+                              solution.slope, system, solution.conditioning)
 
 
 def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: PlaneResolution,
@@ -210,7 +201,7 @@ def partner_shift_theta(c: float, gap: float, gamma: float, solution: PlaneEigen
     solution's slope: the two resolutions' G differ by the discretisation error, their slopes by far less)."""
     ops = plane_operators_at(c, gap, res)
     G = _evaluate(ops, gamma, solution.theta, derivative=False)[2]
-    return -G / slope_along(solution)
+    return -G / solution.slope
 
 
 def _residual(xi: float, theta: float, gamma: float, res: PlaneResolution):

@@ -289,6 +289,12 @@ def test_bad_input_names_the_argument():
         plane.flat_punch(nu=0.3, mu=0.0).pressure(1.5)
     with pytest.raises(ValueError, match="n "):
         plane.power_law(-1, nu=0.3, mu=0.0)
+    # the strip punch solves one problem: longer arrays are refused by name (numpy's "only 0-dimensional arrays"
+    # message before), one-element arrays accepted as numeric.flat_punch accepts them
+    for kwargs, name in ((dict(mu=np.array([0.2, 0.3])), "mu"), (dict(c=np.array([0.2, 0.3])), "c")):
+        with pytest.raises(TypeError, match=f"{name} must be a single number"):
+            plane.flat_punch(nu=0.3, **kwargs)
+    assert plane.flat_punch(nu=np.array([[0.3]]), mu=np.array([0.0])).c == 0.0
 
 
 #: (nu, c) over the plane: small and moderate c, each region of the guess table (S: c <= 0.8; N: gamma <= 0.16,

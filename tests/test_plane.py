@@ -20,7 +20,7 @@ from numeric.core.linear_algebra import equilibrate
 from numeric.core.plane_cauchy import (HBETA, PLAIN, POWER, Family, family_cauchy, hbeta_moments, mode_cauchy, power_moments,
                                        product_rule)
 from numeric.core.plane_charts import PlaneResolution
-from numeric.core.plane_eigenvalue import plane_given_c
+from numeric.core.plane_eigenvalue import plane_given_c, plane_given_c_linearised
 from numeric.core.plane_fields import PlaneField, graded_both_ends
 
 GAMMA_03 = 0.4 / 1.4  # nu = 0.3
@@ -373,6 +373,36 @@ def test_the_linearised_iteration_agrees_with_the_careful_one(nu, c):
         assert np.max(away) <= max(5e-9, 2 * np.max(np.abs(b - f)[~at_c] / scale[~at_c])), (nu, c)
         assert np.max(np.abs(a - b)[at_c] / scale[at_c]) <= 1e-7, (nu, c)
 
+
+@pytest.mark.parametrize("c", [0.01, 0.5])
+def test_the_error_estimate_covers_the_rounding_of_theta_as_nu_tends_to_a_half(c):
+    # as nu -> 1/2 theta ~ gamma^2 K/K' is small and G's rounding, absolute in theta, dominates mu's relative error:
+    # the independent measure is the scatter of the root itself over starts 1e-9 ... 1e-7 off (each its own
+    # linearisation, so its own rounding). Measured at nu = 0.488, level 2: 3.3e-9 (c = 0.01), 1.5e-10 (c = 0.5),
+    # where the estimate was 8.2e-10 and 1e-10 before it counted theta_rounding; now 2.2e-8, 1.5e-9
+    from numeric.solutions.plane_solver import GUESS_SPREAD, PLANE_LEVELS
+    nu = 0.488
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    s = plane.flat_punch(nu=nu, c=c)
+    theta = math.atan(s.mu * g)
+    roots = [plane_given_c_linearised(c, 1 - c, g, theta * (1 + k), PLANE_LEVELS[2], GUESS_SPREAD).theta
+             for k in (-3e-8, -1e-8, -1e-9, 1e-9, 1e-8, 3e-8, 1e-7)]
+    mus = np.tan(roots) / g
+    assert (mus.max() - mus.min()) <= s.error
+
+
+@pytest.mark.parametrize("nu, c", [(0.499, 0.01), (0.499, 0.1), (0.495, 1e-4)])
+def test_the_linearised_iteration_settles_at_its_rounding_near_nu_a_half(nu, c):
+    # theta's rounding scatter there is 1e-7 ... 4e-6 relative, above the iteration's relative tolerances: before they
+    # were absolute as well (theta_rounding), starts at the root itself or 1e-8 ... 1e-7 off raised SolverError at
+    # these points (the route then fell back on the careful iteration); now each settles, within the estimate
+    from numeric.solutions.plane_solver import GUESS_SPREAD, PLANE_LEVELS
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    s = plane.flat_punch(nu=nu, c=c)
+    theta = math.atan(s.mu * g)
+    for k in (0.0, -3e-8, 1e-8, 1e-7):
+        root = plane_given_c_linearised(c, 1 - c, g, theta * (1 + k), PLANE_LEVELS[2], GUESS_SPREAD).theta
+        assert abs(math.tan(root) / g - s.mu) <= s.error
 
 def test_one_round_given_c_and_two_solves_given_mu(monkeypatch):
     # what the table buys: given c, one linearised round (two assemblies); given mu, two given-c solves (the table's c,

@@ -95,12 +95,14 @@ class NewtonRoot(NamedTuple):
 
 
 def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_steps: int = 30,
-                 conditioning: bool = False) -> NewtonRoot:
+                 conditioning: bool = False, noise: float = 0.0) -> NewtonRoot:
     """Root of G(theta) = l(theta) . D(theta)^-1 b on (0, pi/2] from theta, basis fixed.
 
     Returns a ``NewtonRoot`` (``EquilibratedLU.condition`` of its LU if ``conditioning``). Stops when a step is below tol relative, or once the
     steps stop shrinking (at least fourfold) while below 1e-8 relative: Newton has reached the
-    rounding floor of G, and the last step measures it."""
+    rounding floor of G, and the last step measures it; or when a step is below ``noise`` (absolute: the caller's
+    known rounding scatter of theta, which at small theta can exceed 1e-8 relative), the step then taken and z
+    carried along it to first order, as after a first step below 1e-9 relative."""
     previous = math.inf
     for _ in range(max_steps):
         lu = EquilibratedLU(system.matrix(theta), conditioning)
@@ -118,8 +120,8 @@ def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_step
         elif new <= 0.0:
             new = 0.5 * theta
         size = abs(new - theta)
-        if size <= 1e-9 * theta and previous == math.inf:  # first step from a close guess: the next is ~1e-18
-            dz = -lu.solve(dD_z)
+        if (size <= 1e-9 * theta and previous == math.inf) or size <= noise:  # a close guess (the next step is
+            dz = -lu.solve(dD_z)                                                  # ~1e-18), or a step within noise
             return NewtonRoot(new, z + (new - theta) * dz, size, lu, float(dG))
         if size <= tol * theta or (size <= 1e-8 * theta and size >= 0.25 * previous):
             return NewtonRoot(new, z, size, lu, float(dG))

@@ -38,13 +38,31 @@ from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocatio
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
            "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
-           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX"]
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "theta_rounding"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
 """Largest theta Newton visits (mu gamma = 1e9): at pi/2 itself the generic mode degenerates (``MODE_BETA_MIN``)."""
 ALPHA_TOLERANCE = 1e-12
 """Newton in theta stops when a step is below this, relative."""
+THETA_ROUNDING = 5e-13
+"""Scale of ``theta_rounding``."""
+
+
+def theta_rounding(c: float) -> float:
+    """The rounding scatter of a given-c solve's theta, absolute: ``THETA_ROUNDING`` c^-0.4.
+
+    The eigen functional's rounding is absolute in theta, not relative: as nu -> 1/2 (gamma -> 0, theta ~ gamma^2
+    K(c)/K'(c)) the equilibrated system's condition grows like 1/gamma (1.9e12 at nu = 0.3, 8.7e13 at 0.499, c = 0.5;
+    scaling the tangential rows, or Ruiz's equilibration, does not lower it) and G's scatter with it (6e-14 at nu = 0.3,
+    1.5e-11 at 0.499). Measured: the spread (max - min) of theta over seven starts 1e-9 ... 1e-7 off, at levels 0-4,
+    nu in {-1/2, 0, 0.3, 0.45, 0.47, 0.488, 0.495, 0.499}, c in {1e-4, 1e-3, 3e-3, 0.01, 0.1, 0.5, 0.9, 0.99}: for
+    nu >= 0.45 1e-14 ... 3.6e-12, growing toward small c like c^-0.4 and with the level (degree); this envelope, with
+    the relative floor 1e-10, lies above the spread of mu at 152 of 154 points where that spread exceeds 3e-11 (median
+    5.9x where it decides); the two below are nu = 0.47, c = 0.99 at levels 3 and 4 (an isolated spike, 2.7e-12 there
+    against 5e-13 at nu = 0.465 and 0.475). It floors the error estimate, and Newton on the linearised system stops
+    at a step below it (taking that step: the root is then within the step's square, not within the envelope)."""
+    return THETA_ROUNDING * c**-0.4
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -117,19 +135,20 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     """theta for stick half-width c = 1 - gap from a close guess: Newton (``numeric.core.eigenvalue.newton_theta``) on
     the system linearised in the basis exponent about the guess (``LinearisedPlaneSystem``), its difference step the
     larger of ``EXPONENT_STEP`` and ``spread`` (the guess's expected relative error: the secant then spans the root);
-    again about the result while Newton moved theta by more than ``OUTER_TOLERANCE``. Raises SolverError if that takes
+    again about the result while Newton moved theta by more than ``OUTER_TOLERANCE`` (relative) and ``theta_rounding(c)``
+    (absolute: as nu -> 1/2 theta's rounding scatter exceeds 1e-7 relative, and rounds would chase it). Raises SolverError if that takes
     more than ``max_outer`` rounds or Newton does not converge (the caller falls back to ``plane_given_c``)."""
     ops = plane_operators_at(c, gap, res)
     theta = min(theta_guess, THETA_MAX)
     step = max(EXPONENT_STEP, spread)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
-        root = newton_theta(system, theta, conditioning=True)
+        root = newton_theta(system, theta, conditioning=True, noise=theta_rounding(c))
         new = root.theta
         moved = abs(new - theta)
         if not 0.0 < new < THETA_MAX:
             break
-        if moved <= OUTER_TOLERANCE * new:
+        if moved <= max(OUTER_TOLERANCE * new, theta_rounding(c)):
             return PlaneEigensolution(system.at(new), ops, new, root.coefficients, root.last_step, root.slope, system,
                                       root.lu.condition())
         theta, step = new, max(EXPONENT_STEP, moved / new)

@@ -4,7 +4,10 @@ Each level is a ``PlaneResolution`` (``PLANE_LEVELS``); ``error`` is the differe
 the same problem one polynomial degree lower (``plane_partner``; its root from one evaluation of its eigen
 functional at the level's root, over the level's slope), at least ``ROUNDING_FLOOR`` times the
 value (the scatter of mu between degrees 20 ... 28, where the discretisation error is far below it,
-measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]).
+measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]), and at least theta's absolute
+rounding scatter ``theta_rounding(c)`` turned into mu or c: as nu -> 1/2 theta ~ gamma^2 falls below 1e-3 and that
+scatter, not the discretisation, limits the relative accuracy (measured: 2.6e-10 ... 1.3e-7 in mu at nu = 0.47 ...
+0.499; ``numeric.core.plane_eigenvalue.theta_rounding``).
 
 The estimate is a solve at the partner resolution, so it is formed when ``error`` is first read
 (``numeric.solutions.solution.DeferredError``).
@@ -37,7 +40,7 @@ from numeric.core.eigenvalue import guided_steps
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.plane_charts import PlaneResolution, plane_partner
 from numeric.core.plane_eigenvalue import (PlaneEigensolution, partner_shift_theta, partner_shift_xi, plane_at_theta,
-                                           plane_given_c, plane_given_c_linearised, plane_given_theta)
+                                           plane_given_c, plane_given_c_linearised, plane_given_theta, theta_rounding)
 from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_fit, stick_width_guess, theta_guess
 from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS, GAMMA_N, GAP_N as GUESS_GAP_N
@@ -146,7 +149,9 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
 
     def estimate() -> float:
         shift = partner_shift_theta(c, gap, gamma, solution, plane_partner(solution.layout.resolution))
-        return max(abs(_mu(fine.theta + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu)
+        t = fine.theta
+        rounding = fine.mu * theta_rounding(c) / (math.sin(t) * math.cos(t))  # d mu / mu = d theta / (sin cos)
+        return max(abs(_mu(t + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu, rounding)
 
     return PlaneSolve(fine, DeferredError(estimate), level)
 
@@ -254,7 +259,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
 
         try:
             last, slope, remaining = guided_steps(theta, c, gap, guess.slope, step, lambda s: s.theta,
-                                                  theta_noise=THETA_SCATTER * theta)
+                                                  theta_noise=max(THETA_SCATTER * theta, theta_rounding(c)))
         except SolverError:
             last = None
         if last is not None:
@@ -264,7 +269,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
             def estimate() -> float:
                 lay = solution.layout
                 shift = partner_shift_theta(lay.c, lay.gap, gamma, last, plane_partner(lay.resolution))
-                return _gap_error(fine, abs(shift / slope) + remaining)
+                return _gap_error(fine, (abs(shift) + theta_rounding(lay.c)) / abs(slope) + remaining)
 
             return PlaneSolve(fine, DeferredError(estimate), level)
     c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]

@@ -141,14 +141,15 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     ops = plane_operators_at(c, gap, res)
     theta = min(theta_guess, THETA_MAX)
     step = max(EXPONENT_STEP, spread)
+    noise = theta_rounding(c)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
-        root = newton_theta(system, theta, conditioning=True, noise=theta_rounding(c))
+        root = newton_theta(system, theta, conditioning=True, noise=noise)
         new = root.theta
         moved = abs(new - theta)
         if not 0.0 < new < THETA_MAX:
             break
-        if moved <= max(OUTER_TOLERANCE * new, theta_rounding(c)):
+        if moved <= max(OUTER_TOLERANCE * new, noise):
             return PlaneEigensolution(system.at(new), ops, new, root.coefficients, root.last_step, root.slope, system,
                                       root.lu.condition())
         theta, step = new, max(EXPONENT_STEP, moved / new)

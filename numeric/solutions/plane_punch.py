@@ -251,11 +251,11 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         rtol = check_rtol(rtol)
         value = (lambda s: s.mu) if c is not None else (lambda s: s.c)
         return _meeting(rtol, lambda lv: strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=lv), value)
-    g = resolve_gamma(None if nu is None else real_number(check_nu(nu), "nu"), gamma)
+    nu = None if nu is None else real_number(check_nu(nu), "nu")
+    g = resolve_gamma(nu, gamma)
     level = _level(DEFAULT_LEVEL if level is None else level)
     if (mu is None) == (c is None):
         raise ValueError("give exactly one of mu (friction coefficient) or c (stick half-width / a)")
-    nu = None if nu is None else real_number(nu, "nu")
     if c is not None:
         c = real_number(check_c(c), "c")
         if c == 1.0:
@@ -300,12 +300,13 @@ def plane_slip_limit(nu: float | None = None, *, gamma: float | None = None, lev
                      ) -> StripPunchSolution:
     """The frictional strip punch in the limit mu -> inf: c = c_max < 1, no pressure on the slip zones (q = R/gamma
     there); not the fully stuck punch (``strip_punch(mu=inf)``). ``error`` is that of 1 - c_max."""
-    g = resolve_gamma(None if nu is None else real_number(check_nu(nu), "nu"), gamma)
+    nu = None if nu is None else real_number(check_nu(nu), "nu")
+    g = resolve_gamma(nu, gamma)
     if g == 0.0:
         raise ValueError("gamma = 0 (nu = 1/2): no coupling, every mu > 0 sticks fully (c = 1)")
     solve = solve_limit(g, _level(level))
     f = solve.field
-    return StripPunchSolution(None if nu is None else real_number(nu, "nu"), g, math.inf, 1.0 - solve.gap_limit, solve.gap_limit,
+    return StripPunchSolution(nu, g, math.inf, 1.0 - solve.gap_limit, solve.gap_limit,
                               solve.error, f"limit mu -> inf (slip zones without pressure; c extrapolated from mu gamma "
                               f"= 1e5, 1e6, the stresses at 1e6), solver level {level}, {f.n_unknowns} unknowns",
                               f.residual, f)

@@ -4,9 +4,11 @@ The stresses of the frictional flat punch are analytic in u = x^2 except at the 
 boundary u = c^2 and at the edge u = 1, where their behaviour is known
 (``shared/spec/reformulation.md``, checked here by fits to independent solutions):
 
-- at x = c, on both sides, p and q/x are A(s) + s^beta B(s) with A, B analytic in
-  s = sqrt|u - c^2| (half-integer powers of |x - c| come from the Abel integrals),
-  beta = 1 - 2 alpha, tan(pi alpha) = mu gamma ([S75] (2.15));
+- at x = c, q/x on the stick side and p (q = mu p) on the slip side are A(s) + s^beta B(s) with
+  A, B analytic in s = sqrt|u - c^2| (half-integer powers of |x - c| come from the Abel integrals),
+  beta = 1 - 2 alpha, tan(pi alpha) = mu gamma ([S75] (2.15)); p on the stick side is A(s) alone:
+  near c the problem is locally plane, and the plane local solutions (every exponent lam with
+  cot(pi lam) = mu gamma, ``asymptotics.derive.plane``) carry no pressure on the stick side;
 - at x = 1, p = t^(alpha - 1/2) [A(t) + t log t B(t)], t = 1 - u: the exponent of the
   frictional edge and, because every alpha - 1/2 + k is again a local exponent, a
   resonant logarithm one order higher.
@@ -24,6 +26,20 @@ h_beta(s) = (s^beta - s)/(beta - 1) for beta > 1/2 and (s^beta - 1)/beta for bet
 spans, with the polynomials, the same functions as s^beta, but stays a well-conditioned
 basis function as beta -> 1 (mu gamma -> 0, where it tends to s log s) and as beta -> 0
 (mu -> inf, log s: the limit problem of the largest stick radius).
+
+The stick pressure P shares the stick end's basis with the shear Q, but for beta <= 1/2 (mu gamma >= 1) its
+coefficients of the singular family are pinned to 0 (``numeric.core.operators.pinned_rows``). Left free
+there, they were undetermined (noise along one direction, of either sign between degrees) and made a
+near-null vector of the system concentrated at x = c, as h_beta tends to log s: at nu = 0, c = 0.9988
+(mu = 16.8, degree 12) the equilibrated system's least singular value was 2.4e-13 (the next 1.6e-9) and
+p, q within 1e-9 (1 - c) of c moved by 1e-7 when the system was perturbed by 1e-16. Solved without them in
+least squares, the same system leaves a residual at rounding (4.8e-15: the solution has no such
+component); pinned, its least singular value is 1.3e-10 and the same perturbation moves p by 8e-11. For
+beta > 1/2 the free family does no harm (h_beta(0) = 0; least singular value 4.6e-10 at nu = 0, c = 0.3),
+and pinning it there made mu scatter between degrees 12 ... 26 by ten times more at small c (4e-12 against
+3.7e-13 at nu = 0, c = 1e-3), so it stays. mu at level 2 stays within 1e-12 of the previous basis's level
+4 (11 (nu, c) from c = 0.01 to 1 - c = 1.05 (1 - c_max)), and next to c_max p at x = c now converges with
+the degree (``tests/test_singular_solver.py``).
 
 Points are stored as an anchor (c^2 or 1) plus an offset, so elements of width 1e-12 next
 to c^2 or 1 lose no digits, and 1 - c is taken as given (``gap``) rather than formed.

@@ -14,10 +14,13 @@ points and elements of a kind at once, into matrices over the whole basis (``Abe
 the families that carry alpha are contracted per alpha from cached nodes.
 
 The eigenvalue condition is phi(c-) = 0, phi = p - q/mu (2.11), the same as chi(c) = 0
-(2.13) and q/(mu p) -> 1 at c (§4.1). In the basis phi = a + h_beta(0) b at c- (a: the
-regular part, b: the singular family's), and the functional returned is phi(c-) cos(theta)
-for beta > 1/2 and beta phi(c-) cos(theta) = beta a - b otherwise: smooth in beta down to
-beta = 0 (mu = inf), where it says that the logarithm of p at c- vanishes.
+(2.13) and q/(mu p) -> 1 at c (§4.1). The stick pressure has no singular family
+(``numeric.core.charts``: for beta <= 1/2 its coefficients are pinned to 0, above h_beta(0) = 0), so
+p(c-) = a_P, the regular part, and q(c-) = c (a_Q + h_beta(0) b_Q) with h_beta(0) = -1/beta for
+beta <= 1/2 (0 above). The functional
+returned is mu cos(theta) phi(c-) = sin(theta)/gamma a_P - c cos(theta) a_Q + c (cos(theta)/beta) b_Q:
+smooth down to beta = 0 (mu = inf), where cos(theta)/beta tends to pi/2 on the diagonal theta = pi (1 - beta)/2
+and the condition becomes a_P/gamma + (pi/2) c b_Q = 0 (the limit problem of the largest stick radius).
 
 References
 ----------
@@ -39,7 +42,7 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, shifted_legendre)
 
-__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
+__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "pinned_rows", "near_plain", "normal_factor"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -337,7 +340,8 @@ class CollocationSystem:
     normal: np.ndarray      # (n, nl): slip columns multiplying p = R cos(theta)
     shear: np.ndarray       # (n, nl): slip columns multiplying q = R sin(theta)/gamma
     rhs: np.ndarray
-    end_row: np.ndarray     # (ns,): value at c- of a stick field (with the beta scaling of the functional)
+    end_row: np.ndarray     # (ns,): a, the regular part of a stick field at c-: all of P(c-) (module docstring)
+    end_singular: np.ndarray  # (ns,): b, the singular family's coefficient at c-: Q(c-) = a_Q + h_beta(0) b_Q
     integral: np.ndarray    # (ns + nl,): int P du over each element's basis (stick, then slip)
     x: np.ndarray           # collocation points
     u_star_stick: np.ndarray   # (nl, 2 ns): u* of (2.2b) at the slip points from the stick unknowns
@@ -372,18 +376,20 @@ class CollocationSystem:
         return -math.sin(theta) * (self.normal @ slip) + (normal_factor(theta) / self.gamma) * (self.shear @ slip)
 
     def functional(self, theta: float) -> np.ndarray:
-        """l with l . z = phi(c-) cos(theta) (times beta for beta <= 1/2): sin(theta)/gamma p(c-) - cos(theta) q(c-)."""
-        ns = self.n_stick
+        """l with l . z = mu cos(theta) phi(c-) = sin(theta)/gamma p(c-) - cos(theta) q(c-) (module docstring)."""
+        ns, c = self.n_stick, self.layout.c
         out = np.zeros(self.rhs.size)
         out[:ns] = _shear_factor(theta, self.gamma) * self.end_row
-        out[ns: 2 * ns] = -normal_factor(theta) * self.layout.c * self.end_row
+        out[ns: 2 * ns] = c * (_cos_over_beta(theta, self.alpha) * self.end_singular - normal_factor(theta) * self.end_row)
         return out
 
     def functional_derivative(self, theta: float) -> np.ndarray:
-        ns = self.n_stick
+        ns, c = self.n_stick, self.layout.c
+        beta = 1.0 - 2.0 * self.alpha
         out = np.zeros(self.rhs.size)
         out[:ns] = (normal_factor(theta) / self.gamma) * self.end_row
-        out[ns: 2 * ns] = math.sin(theta) * self.layout.c * self.end_row
+        singular = -math.sin(theta) / beta if 0.0 < beta <= 0.5 else 0.0  # d (cos(theta)/beta) / d theta
+        out[ns: 2 * ns] = c * (singular * self.end_singular + math.sin(theta) * self.end_row)
         return out
 
 
@@ -395,6 +401,40 @@ def normal_factor(theta: float) -> float:
 def _shear_factor(theta: float, gamma: float) -> float:
     """sin(theta)/gamma = mu cos(theta)."""
     return math.sin(theta) / gamma
+
+
+def _cos_over_beta(theta: float, alpha: float) -> float:
+    """cos(theta)/beta, beta = 1 - 2 alpha, at basis exponent alpha: -cos(theta) h_beta(0), the singular family's weight in
+    cos(theta) q(c-); 0 for beta > 1/2 (h_beta(0) = 0), and at beta = 0 (mu = inf) its limit pi/2 on the diagonal
+    theta = pi alpha."""
+    beta = 1.0 - 2.0 * alpha
+    if beta > 0.5:
+        return 0.0
+    return normal_factor(theta) / beta if beta > 0.0 else 0.5 * math.pi
+
+
+def pinned_rows(n: int, k: int) -> np.ndarray:
+    """The k of the stick end's n collocation points (counted from c) whose (2.2a) rows pin the stick pressure's singular
+    coefficients to 0: every (n // k)-th from the second on, spread over the element.
+
+    Without those coefficients the system has k more equations than unknowns, and the k dropped must be of (2.2a), the
+    equation that determines p: as gamma -> 0, (2.2b) alone determines q (dropping k of its rows left q undetermined at
+    gamma = 1e-30). Which k of the points matters: measured at nu = 0, c = 0.9988 (mu = 16.8) and c = 0.99895, degrees 12
+    ... 22, the spread choice keeps mu within 1e-12 of the degree-18 solution, and p at x = c within 1e-9 (dropping the
+    k points farthest from c put mu 1e-10 off, the k nearest 7e-7 in p, the k in the middle 1e-9 in mu at c = 1e-3)."""
+    return 1 + (n // k) * np.arange(k)
+
+
+def _pin_stick_pressure(stick: np.ndarray, normal: np.ndarray, shear: np.ndarray, rhs: np.ndarray, u_star: np.ndarray,
+                        columns: np.ndarray, rows: np.ndarray) -> None:
+    """Rows ``rows`` become z[columns] = 0 (in place); the columns are cleared everywhere else."""
+    stick[:, columns] = 0.0
+    stick[rows] = 0.0
+    stick[rows, columns] = 1.0
+    normal[rows] = 0.0
+    shear[rows] = 0.0
+    rhs[rows] = 0.0
+    u_star[:, columns] = 0.0
 
 
 def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> CollocationSystem:
@@ -423,11 +463,17 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     rhs[:N] = 1.0
     e = lay.stick_end
     deg, sdeg = int(lay.degree[e]), int(lay.singular_degree[e])
+    singular_slots = np.arange(int(lay.starts[e]) + deg + 1, int(lay.starts[e + 1]))
+    if 1.0 - 2.0 * alpha <= 0.5:
+        # P has no singular family on the stick end (``numeric.core.charts``): for beta <= 1/2 its coefficients there are
+        # pinned to 0, in the rows of (2.2a) at sdeg + 1 of the stick end's points spread over it (``pinned_rows``);
+        # above, h_beta(0) = 0 and the free family does no harm
+        _pin_stick_pressure(stick, normal, shear, rhs, us_stick, singular_slots,
+                            int(lay.starts[e]) + pinned_rows(int(lay.n_basis[e]), singular_slots.size))
     at_c = shifted_legendre(deg, np.zeros(1))[0]  # P_k(-1) = (-1)^k
-    beta = 1.0 - 2.0 * alpha
-    scale_regular, scale_singular = (1.0, 0.0) if beta > 0.5 else (beta, -1.0)
-    end_row = np.zeros(ns)
-    end_row[int(lay.starts[e]): int(lay.starts[e + 1])] = np.concatenate(
-        [scale_regular * at_c, scale_singular * at_c[: sdeg + 1]])
-    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, end_row, M.integral.copy(), x, us_stick,
-                             -gamma * M.lower[ns:, ns:], xl[:, None] * M.upper_x[ns:, ns:])
+    regular = np.zeros(ns)
+    regular[int(lay.starts[e]): int(lay.starts[e]) + deg + 1] = at_c
+    singular = np.zeros(ns)
+    singular[singular_slots] = at_c[: sdeg + 1]
+    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, regular, singular, M.integral.copy(),
+                             x, us_stick, -gamma * M.lower[ns:, ns:], xl[:, None] * M.upper_x[ns:, ns:])

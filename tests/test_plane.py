@@ -206,6 +206,22 @@ def test_the_stresses_converge_at_c_and_next_to_the_edge(punch):
     assert np.all(np.abs(p - pf) <= 1e-9 * scale) and np.all(np.abs(q - qf) <= 1e-9 * scale)
 
 
+@pytest.mark.parametrize("nu, c", [(0.0, 0.99), (0.0, 0.995), (-0.5, 0.93)])
+def test_the_stresses_at_c_converge_next_to_the_largest_stick_width(nu, c):
+    # alpha = 0.33 ... 0.48: the default level against degree 24 at x = c, the doubles next to it and within 1e-9 of it
+    # (relative to c, 1 - c), p relative to max(1, |p|), q to max(1, |q|). Measured 5e-10, 6.6e-10, 7.6e-10; with the
+    # stick pressure's singular family free (before it was pinned from alpha = 1/4 on) 6.7e-9, 5e-8, 1.5e-6. Bound
+    # 2e-9, the stress target (1e-9) with room for rounding
+    from numeric.solutions.plane_solver import DEFAULT_LEVEL, PLANE_LEVELS
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    theta = math.atan(plane.flat_punch(nu=nu, c=c).mu * g)
+    x = np.array([c * (1 - 1e-9), np.nextafter(c, 0.0), c, np.nextafter(c, 2.0), c + 1e-9 * (1 - c)])
+    p, q = PlaneField(plane_given_c(c, 1 - c, g, theta, PLANE_LEVELS[DEFAULT_LEVEL])).pressure_shear(x)
+    pf, qf = PlaneField(plane_given_c(c, 1 - c, g, theta, PlaneResolution(24, 2))).pressure_shear(x)
+    assert np.all(np.abs(p - pf) <= 2e-9 * np.maximum(1.0, np.abs(pf))), (p - pf)
+    assert np.all(np.abs(q - qf) <= 2e-9 * np.maximum(1.0, np.abs(qf))), (q - qf)
+
+
 def test_slip_integral_rule():
     # the composite rules of the slip integral (innermost pieces in s = h v^16, Christoffel weights): the strain's end
     # behaviours s^lam, lam >= -1/2 ((1 - t)^(alpha - 1/2) at the edge, (t - c)^beta at c), log s and log^2 s, to
@@ -420,14 +436,14 @@ def test_one_round_given_c_and_two_solves_given_mu(monkeypatch):
     assert len(rounds) == 2 and abs(back.c - 0.9) <= back.error
 
 
-@pytest.mark.parametrize("nu, c", [(-0.5, 0.9117), (-0.5, 0.925)])
-def test_a_layout_near_a_pole_of_g_gives_way_to_the_alternate(nu, c):
-    # at these (nu, c) the default layout's system is nearly singular at the root (a pole of G close by: conditioning
-    # 1.8e15, 4e13, mu off by 4e-8, 1.5e-9, its estimate saying as much); the route takes the alternate layout
-    # (c_fraction 0.1, conditioning 2e11 ... 3e11, times gamma^2 = 4/9 below CONDITION_LIMIT). Against the median of four finer solves (degrees 26, 28 in two
-    # layouts, ``reference_mu``), measured 5e-13 and 6e-15; bound 1e-11, the level's accuracy away from such poles
+def test_a_layout_near_a_pole_of_g_gives_way_to_the_alternate():
+    # at nu = -0.008, c = 0.17 (alpha = 0.048) the default layout's system is nearly singular at the root (a pole of G
+    # close by: mu off by 2.5e-10 at the default level, degrees 21 ... 28 within 2e-13 of each other); the route takes
+    # the alternate layout (c_fraction 0.1), 1.4e-12 from the median of four finer solves (degrees 26, 28 in two layouts,
+    # ``reference_mu``), measured; bound 1e-11, the level's accuracy away from such poles
     from numeric.solutions.plane_solver import ALTERNATE_C_FRACTION, CONDITION_LIMIT, DEFAULT_LEVEL, PLANE_LEVELS
     from numeric.studies.plane_bench import reference_mu
+    nu, c = -0.008, 0.17
     g = (1 - 2 * nu) / (2 - 2 * nu)
     default = plane_given_c(c, 1 - c, g, math.atan(reference_mu(nu, c) * g), PLANE_LEVELS[DEFAULT_LEVEL])
     s = plane.flat_punch(nu=nu, c=c)
@@ -436,6 +452,23 @@ def test_a_layout_near_a_pole_of_g_gives_way_to_the_alternate(nu, c):
     assert abs(s.mu / reference_mu(nu, c) - 1) < 1e-11
     assert abs(PlaneField(default).mu / reference_mu(nu, c) - 1) > 1e-10  # the default layout itself is off there
     assert s.error >= abs(s.mu - reference_mu(nu, c))
+
+
+@pytest.mark.parametrize("nu, c", [(-0.5, 0.9117), (-0.5, 0.925)])
+def test_the_poles_near_c_max_were_the_free_stick_pressure_family(nu, c):
+    # at these (nu, c) (alpha = 0.41, 0.44) the default layout was nearly singular at the root (conditioning 1.8e15,
+    # 4e13; mu off by 4e-8, 1.5e-9): p's singular family on the stick end, free, made a near-null vector concentrated at
+    # c. Pinned to 0 from alpha = 1/4 on (``plane_collocation_system``) the default layout keeps its conditioning
+    # (gamma^2 x conditioning below CONDITION_LIMIT, so the route stays in it, one solve instead of two) and the
+    # route's mu is within 2.5e-13, 3.8e-13 of the median of four finer solves (measured; the default layout's own
+    # iteration from the reference, 7e-16); bound 1e-11, the level's accuracy away from poles
+    from numeric.solutions.plane_solver import ALTERNATE_C_FRACTION, CONDITION_LIMIT
+    from numeric.studies.plane_bench import reference_mu
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    s = plane.flat_punch(nu=nu, c=c)
+    assert s.field.layout.resolution.c_fraction != ALTERNATE_C_FRACTION
+    assert g * g * s.field.solution.conditioning < CONDITION_LIMIT
+    assert abs(s.mu / reference_mu(nu, c) - 1) < 1e-11
 
 
 def test_rtol_chooses_the_coarsest_level_that_meets_it():

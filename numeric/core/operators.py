@@ -40,9 +40,10 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      outside_projector,
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
-from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, shifted_legendre)
+from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, pinned_rows,
+                                 pins_stick_pressure, shifted_legendre)
 
-__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "pinned_rows", "near_plain", "normal_factor"]
+__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -413,18 +414,6 @@ def _cos_over_beta(theta: float, alpha: float) -> float:
     return normal_factor(theta) / beta if beta > 0.0 else 0.5 * math.pi
 
 
-def pinned_rows(n: int, k: int) -> np.ndarray:
-    """The k of the stick end's n collocation points (counted from c) whose (2.2a) rows pin the stick pressure's singular
-    coefficients to 0: every (n // k)-th from the second on, spread over the element.
-
-    Without those coefficients the system has k more equations than unknowns, and the k dropped must be of (2.2a), the
-    equation that determines p: as gamma -> 0, (2.2b) alone determines q (dropping k of its rows left q undetermined at
-    gamma = 1e-30). Which k of the points matters: measured at nu = 0, c = 0.9988 (mu = 16.8) and c = 0.99895, degrees 12
-    ... 22, the spread choice keeps mu within 1e-12 of the degree-18 solution, and p at x = c within 1e-9 (dropping the
-    k points farthest from c put mu 1e-10 off, the k nearest 7e-7 in p, the k in the middle 1e-9 in mu at c = 1e-3)."""
-    return 1 + (n // k) * np.arange(k)
-
-
 def _pin_stick_pressure(stick: np.ndarray, normal: np.ndarray, shear: np.ndarray, rhs: np.ndarray, u_star: np.ndarray,
                         columns: np.ndarray, rows: np.ndarray) -> None:
     """Rows ``rows`` become z[columns] = 0 (in place); the columns are cleared everywhere else."""
@@ -464,7 +453,7 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     e = lay.stick_end
     deg, sdeg = int(lay.degree[e]), int(lay.singular_degree[e])
     singular_slots = np.arange(int(lay.starts[e]) + deg + 1, int(lay.starts[e + 1]))
-    if 1.0 - 2.0 * alpha <= 0.5:
+    if pins_stick_pressure(alpha):
         # P has no singular family on the stick end (``numeric.core.charts``): for beta <= 1/2 its coefficients there are
         # pinned to 0, in the rows of (2.2a) at sdeg + 1 of the stick end's points spread over it (``pinned_rows``);
         # above, h_beta(0) = 0 and the free family does no harm

@@ -101,7 +101,7 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     if not derivative:
         return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
-    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP)
+    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned)
     dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
     dG = system.functional_derivative(theta) @ z - y @ (dD @ z)
     return system, z, float(l @ z), float(dG)
@@ -244,13 +244,15 @@ def plane_given_theta(theta: float, gamma: float, xi_guess: float, res: PlaneRes
     for _ in range(max_steps):
         if g1 == g0:
             return PlaneEigensolution(system, ops, theta, z, abs(x1 - x0))
-        x2 = x1 - g1 * (x1 - x0) / (g1 - g0)
+        slope = (g1 - g0) / (x1 - x0)
+        x2 = x1 - g1 / slope
         x0, g0 = x1, g1
         x1 = x2
         g1, system, ops, z = _residual(x1, theta, gamma, res)
         size = abs(x1 - x0)
         if size <= tol * max(1.0, abs(x1)) or (size <= 1e-9 and size >= 0.25 * previous):
-            return PlaneEigensolution(system, ops, theta, z, size, (g1 - g0) / (x1 - x0))
+            # the slope of the last two points, or (a step of zero: G was 0 to the last bit) the one it was taken with
+            return PlaneEigensolution(system, ops, theta, z, size, (g1 - g0) / (x1 - x0) if size > 0.0 else slope)
         previous = size
     raise SolverError(f"the secant iteration in c did not converge for theta = {theta}, gamma = {gamma}")
 

@@ -41,6 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from numeric.core.charts import pinned_rows, pins_stick_pressure
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
 from numeric.core.quadrature import gauss_legendre
@@ -203,6 +204,7 @@ class PlaneCollocationSystem:
     stick_columns: np.ndarray  # basis columns (of ``PlaneOperators``) of the stick zone, then of the slip zone
     slip_columns: np.ndarray
     integrals: np.ndarray   # int_0^1 of every basis function (layout order)
+    pinned: bool            # whether p's singular family on the stick end is pinned to 0 (``plane_collocation_system``)
 
     @property
     def n_stick(self) -> int:
@@ -242,13 +244,24 @@ class PlaneCollocationSystem:
         return np.zeros(self.rhs.size)
 
 
-def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) -> PlaneCollocationSystem:
+def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pinned: bool | None = None
+                             ) -> PlaneCollocationSystem:
     """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
 
     The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
     stick side and p = -gamma cos(pi alpha) q on the slip side) enters as q = m on the stick end and
     R = -gamma m on the slip end (p = R cos(theta)), m = beta s^(beta - 1) (unit integral; the delta function
-    at c for mu = inf)."""
+    at c for mu = inf).
+
+    Nor has the admissible local solution (c - x)^(1/2 - alpha), or any with cot(pi lam) = mu gamma, p on the stick
+    side: from alpha = 1/4 on (``numeric.core.charts.pins_stick_pressure``; ``pinned`` overrides, so that the two
+    assemblies of a difference quotient in alpha agree) p's coefficients of h_beta on the stick end are pinned to 0 in
+    (N) rows at the stick end's points ``numeric.core.charts.pinned_rows``, as in the axisymmetric system. Left free,
+    they made a near-null vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
+    system's least singular value rose from 2.2e-11 to 7.9e-9 with the pins, mu moved from 2e-12 to 1e-13 of the
+    degree-24 solution and p at x = c from 7e-9 to 8e-12 (nu = -1/2, c = 0.93: 3e-10 to 3e-13 in mu, 9e-7 to 1e-11 in
+    p). Below alpha = 1/4 they stay free: pinned there, mu between degrees 18 and 24 differed 50 times more at
+    nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5)."""
     lay, pts = ops.layout, ops.points
     T = ops.transforms(alpha)
     stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
@@ -283,7 +296,20 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) ->
     mode_stick[N:-1] = odd_s[stick_pts]
     rhs = np.zeros(n)
     rhs[-1] = 1.0
-    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals)
+    pin = pins_stick_pressure(alpha) if pinned is None else pinned
+    if pin:
+        e = lay.stick_end
+        slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns
+        own = np.flatnonzero(pts.owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
+        rows = own[pinned_rows(own.size, slots.size)]
+        stick[:, slots] = 0.0
+        stick[rows] = 0.0
+        stick[rows, slots] = 1.0
+        normal[rows] = 0.0
+        shear[rows] = 0.0
+        mode_stick[rows] = 0.0
+        rhs[rows] = 0.0
+    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin)
 
 
 def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta: float) -> PlaneCollocationSystem:
@@ -291,7 +317,7 @@ def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta:
     return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, base.stick + delta * rate.stick,
                                   base.normal + delta * rate.normal, base.shear + delta * rate.shear,
                                   base.mode_stick + delta * rate.mode_stick, base.rhs, base.stick_columns,
-                                  base.slip_columns, base.integrals + delta * rate.integrals)
+                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -336,9 +362,10 @@ class LinearisedPlaneSystem:
 def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
     """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
     base = plane_collocation_system(ops, gamma, alpha)
-    other = plane_collocation_system(ops, gamma, alpha + step)
+    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned)
     rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
                                   (other.normal - base.normal) / step, (other.shear - base.shear) / step,
                                   (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),
-                                  base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step)
+                                  base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step,
+                                  base.pinned)
     return LinearisedPlaneSystem(base, rate)

@@ -137,7 +137,7 @@ def _plane(bench: Benchmark) -> list[str]:
              "table above; the error is of mu (given c) or 1 - c (given mu) against the median of degrees 26 and 28 "
              "(two layouts, `numeric.studies.plane_bench.reference_mu`; not level 4, whose own layout is 5e-10 off at "
              "nu = 0.25, c = 0.5, a pole of the eigen functional near the root). Where a layout is near such a pole the "
-             "route solves again in a second one ('alternate layout'), as at nu = -1/2, c = 0.93 here.", "",
+             "route solves again in a second one ('alternate layout', which its route names).", "",
              "| task | time, ms | ratio to the plane scheme | ratio to the axisymmetric task | worst error | points | "
              "reference |", "|---|---|---|---|---|---|---|"]
     for s in bench.plane:

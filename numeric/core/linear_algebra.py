@@ -18,7 +18,7 @@ import math
 import numpy as np
 import scipy.linalg as sla
 
-__all__ = ["equilibrate", "EquilibratedLU"]
+__all__ = ["equilibrate", "EquilibratedLU", "pin_to_zero"]
 
 
 def equilibrate(D: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -53,3 +53,18 @@ class EquilibratedLU:
 
     def solve_transposed(self, y: np.ndarray) -> np.ndarray:
         return sla.lu_solve(self.lu, y * self.cs, trans=1, check_finite=False) * self.rs
+
+
+def pin_to_zero(block: np.ndarray, columns: np.ndarray, rows: np.ndarray, row_parts: tuple[np.ndarray, ...] = (),
+                column_parts: tuple[np.ndarray, ...] = ()) -> None:
+    """Make ``rows`` of a system the equations z[columns] = 0, in place: in ``block`` (the column block holding those
+    unknowns) the rows become unit rows and the columns are cleared elsewhere; the other column blocks and the right
+    side (``row_parts``) have the rows cleared, other row blocks over the same columns (``column_parts``) the columns.
+    The solution then has exactly 0 there, and the other unknowns solve the system without those rows and columns."""
+    block[:, columns] = 0.0
+    block[rows] = 0.0
+    block[rows, columns] = 1.0
+    for part in row_parts:
+        part[rows] = 0.0
+    for part in column_parts:
+        part[:, columns] = 0.0

@@ -42,6 +42,7 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, pinned_rows,
                                  pins_stick_pressure, shifted_legendre)
+from numeric.core.linear_algebra import pin_to_zero
 
 __all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
 
@@ -414,18 +415,6 @@ def _cos_over_beta(theta: float, alpha: float) -> float:
     return normal_factor(theta) / beta if beta > 0.0 else 0.5 * math.pi
 
 
-def _pin_stick_pressure(stick: np.ndarray, normal: np.ndarray, shear: np.ndarray, rhs: np.ndarray, u_star: np.ndarray,
-                        columns: np.ndarray, rows: np.ndarray) -> None:
-    """Rows ``rows`` become z[columns] = 0 (in place); the columns are cleared everywhere else."""
-    stick[:, columns] = 0.0
-    stick[rows] = 0.0
-    stick[rows, columns] = 1.0
-    normal[rows] = 0.0
-    shear[rows] = 0.0
-    rhs[rows] = 0.0
-    u_star[:, columns] = 0.0
-
-
 def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> CollocationSystem:
     """Assemble [S75] (2.2a) at every point and (2.2b) at the stick points for basis exponent alpha."""
     lay = ops.layout
@@ -457,8 +446,8 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
         # P has no singular family on the stick end (``numeric.core.charts``): for beta <= 1/2 its coefficients there are
         # pinned to 0, in the rows of (2.2a) at sdeg + 1 of the stick end's points spread over it (``pinned_rows``);
         # above, h_beta(0) = 0 and the free family does no harm
-        _pin_stick_pressure(stick, normal, shear, rhs, us_stick, singular_slots,
-                            int(lay.starts[e]) + pinned_rows(int(lay.n_basis[e]), singular_slots.size))
+        rows = int(lay.starts[e]) + pinned_rows(int(lay.n_basis[e]), singular_slots.size)
+        pin_to_zero(stick, singular_slots, rows, (normal, shear, rhs), (us_stick,))
     at_c = shifted_legendre(deg, np.zeros(1))[0]  # P_k(-1) = (-1)^k
     regular = np.zeros(ns)
     regular[int(lay.starts[e]): int(lay.starts[e]) + deg + 1] = at_c

@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from numeric.core.charts import pinned_rows, pins_stick_pressure
+from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
 from numeric.core.quadrature import gauss_legendre
@@ -301,14 +302,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
         e = lay.stick_end
         slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns
         own = np.flatnonzero(pts.owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
-        rows = own[pinned_rows(own.size, slots.size)]
-        stick[:, slots] = 0.0
-        stick[rows] = 0.0
-        stick[rows, slots] = 1.0
-        normal[rows] = 0.0
-        shear[rows] = 0.0
-        mode_stick[rows] = 0.0
-        rhs[rows] = 0.0
+        pin_to_zero(stick, slots, own[pinned_rows(own.size, slots.size)], (normal, shear, mode_stick, rhs))
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin)
 
 

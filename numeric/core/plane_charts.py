@@ -4,7 +4,8 @@ The stresses of the frictional strip punch (``asymptotics.plane``; x over the ha
 q odd) are analytic in x except at the stick-slip point x = c and the edge x = 1, where the local
 analysis of the half-plane relations (``asymptotics.derive.plane``) gives
 
-- at x = c, on both sides: p, q = A(x) + |x - c|^beta B(x), beta = 1/2 - alpha, tan(pi alpha) = mu gamma,
+- at x = c, on both sides: p, q = A(x) + |x - c|^beta B(x) (with B = 0 for p on the stick side: the local solutions
+  have no pressure there, ``asymptotics.derive.plane``), beta = 1/2 - alpha, tan(pi alpha) = mu gamma,
   with A, B analytic: the Mellin symbol of the Cauchy kernel has the roots cot(pi lam) = mu gamma only
   (lam = 1/2 - alpha + n), and the regular solutions (lam = 0, 1, ...) are the ones analytic across c
   (the 2 x 2 Riemann-Hilbert problem's local exponents differ by 1/2 - alpha, not an integer: no
@@ -12,7 +13,8 @@ analysis of the half-plane relations (``asymptotics.derive.plane``) gives
 - at x = 1: p = (1 - x)^(alpha - 1/2) E(x), E analytic (the edge of the slip zone, q = mu p).
 
 So the elements touching c ("stick end", "slip end") carry Legendre polynomials plus h_beta(s) times
-polynomials of degree ``singular_degree`` (h_beta = (s^beta - 1)/beta, ``numeric.core.charts.h_beta``:
+polynomials of degree ``singular_degree`` (p's on the stick end pinned to 0 from alpha = 1/4 on: the local solutions
+have no pressure on the stick side, ``numeric.core.plane_operators.plane_collocation_system``) (h_beta = (s^beta - 1)/beta, ``numeric.core.charts.h_beta``:
 the same span as s^beta but well conditioned as beta -> 0, mu -> inf, where it is log s); the element
 touching 1 ("edge") carries s^(alpha - 1/2) times polynomials; every other element ("plain") is a
 polynomial. The chart of an element is linear, t = a + sigma L s, s in [0, 1], with s = 0 at the

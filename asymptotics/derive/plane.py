@@ -94,7 +94,10 @@ def _d_exponents() -> Derivation:
         Step("Mellin symbols of H on one-sided powers |x|^lam near the stick-slip point; the amplitudes (a, b, d) of "
              "q (stick), p (stick), p (slip) solve M (a, b, d) = 0", sp.Eq(sp.Symbol("M"), M)),
         Step("det M (S^2 = 1 + C^2): nonzero roots only where cot(pi lam) = mu gamma", sp.Eq(sp.Symbol("det"), det)),
-        Step("the generic mode lam = -1/2 - alpha: no p on the stick side, d = gamma a sin(pi lam)", sp.Eq(sp.Symbol("M v"), mode)),
+        Step("the generic mode lam = -1/2 - alpha: no p on the stick side, d = gamma a sin(pi lam); M depends on lam "
+             "through C and S only and v solves it for every S, so the admissible lam = 1/2 - alpha (and every lam with "
+             "cot(pi lam) = mu gamma) has no p on the stick side either (the solvers pin that family to 0)",
+             sp.Eq(sp.Symbol("M v"), mode)),
         Step("at the edge (p on x < 1 only, q = mu p): H p + gamma mu p = 0 gives C + mu gamma = 0",
              sp.Eq(C, edge)),
     )

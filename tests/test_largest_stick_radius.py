@@ -19,8 +19,8 @@ from numeric import flat_punch, largest_stick_radius, slip_limit, stick_radius_a
 @pytest.mark.parametrize("gamma", [0.3, 0.5, 2 / 3, 0.75])
 def test_limit_problem_gives_the_closed_form(gamma):
     # the limit problem's root against K'(c)/K(c) = (2/pi) atanh(gamma): 1e-10 relative in 1 - c_max is the
-    # issue's target; measured 8.7e-11, 1.4e-13, 3.6e-14, 3.6e-12 (gamma = .3, .5, 2/3, .75; at .3 the layout
-    # has ~30 elements between c and the centre)
+    # issue's target; measured 6.4e-13, 1.6e-13, 1.7e-14, 3.6e-12 against the closed form at 40 digits (gamma = .3,
+    # .5, 2/3, .75; 8.7e-11 at .3 before the stick pressure's singular family was pinned to 0)
     s = slip_limit(gamma=gamma)
     gap = 1.0 - s.c
     with mpmath.workdps(40):

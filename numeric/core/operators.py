@@ -17,8 +17,8 @@ The eigenvalue condition is phi(c-) = 0, phi = p - q/mu (2.11), the same as chi(
 (2.13) and q/(mu p) -> 1 at c (§4.1). The stick pressure has no singular family
 (``numeric.core.charts``: for beta <= 1/2 its coefficients are pinned to 0, above h_beta(0) = 0), so
 p(c-) = a_P, the regular part, and q(c-) = c (a_Q + h_beta(0) b_Q) with h_beta(0) = -1/beta for
-beta <= 1/2 (0 above). The functional
-returned is mu cos(theta) phi(c-) = sin(theta)/gamma a_P - c cos(theta) a_Q + c (cos(theta)/beta) b_Q:
+beta <= 1/2 (0 above). The functional returned is
+mu cos(theta) phi(c-) = sin(theta)/gamma a_P - c cos(theta) a_Q + c (cos(theta)/beta) b_Q:
 smooth down to beta = 0 (mu = inf), where cos(theta)/beta tends to pi/2 on the diagonal theta = pi (1 - beta)/2
 and the condition becomes a_P/gamma + (pi/2) c b_Q = 0 (the limit problem of the largest stick radius).
 

@@ -184,16 +184,16 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
         outer += 1
         system = collocation_system(ops, gamma, theta / math.pi)
         try:
-            new, z, step = newton_theta(system, theta)[:3]
+            root = newton_theta(system, theta)
         except SolverError:
             if bracketed:
                 raise
             theta, bracketed = _bracket_theta(ops, gamma, theta), True
             continue
-        done = abs(new - theta) <= ALPHA_TOLERANCE * new
-        theta = new
+        done = abs(root.theta - theta) <= ALPHA_TOLERANCE * root.theta
+        theta = root.theta
         if done:
-            return Eigensolution(system, theta, z, step)
+            return Eigensolution(system, theta, root.coefficients, root.last_step)
     raise SolverError(f"the basis exponent did not settle for c = {c}, gamma = {gamma}")
 
 

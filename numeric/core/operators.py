@@ -382,16 +382,16 @@ class CollocationSystem:
         ns, c = self.n_stick, self.layout.c
         out = np.zeros(self.rhs.size)
         out[:ns] = _shear_factor(theta, self.gamma) * self.end_row
-        out[ns: 2 * ns] = c * (_cos_over_beta(theta, self.alpha) * self.end_singular - normal_factor(theta) * self.end_row)
+        weight = _singular_weight(theta, self.alpha)[0]
+        out[ns: 2 * ns] = c * (weight * self.end_singular - normal_factor(theta) * self.end_row)
         return out
 
     def functional_derivative(self, theta: float) -> np.ndarray:
         ns, c = self.n_stick, self.layout.c
-        beta = 1.0 - 2.0 * self.alpha
         out = np.zeros(self.rhs.size)
         out[:ns] = (normal_factor(theta) / self.gamma) * self.end_row
-        singular = -math.sin(theta) / beta if 0.0 < beta <= 0.5 else 0.0  # d (cos(theta)/beta) / d theta
-        out[ns: 2 * ns] = c * (singular * self.end_singular + math.sin(theta) * self.end_row)
+        slope = _singular_weight(theta, self.alpha)[1]
+        out[ns: 2 * ns] = c * (slope * self.end_singular + math.sin(theta) * self.end_row)
         return out
 
 
@@ -405,14 +405,16 @@ def _shear_factor(theta: float, gamma: float) -> float:
     return math.sin(theta) / gamma
 
 
-def _cos_over_beta(theta: float, alpha: float) -> float:
-    """cos(theta)/beta, beta = 1 - 2 alpha, at basis exponent alpha: -cos(theta) h_beta(0), the singular family's weight in
-    cos(theta) q(c-); 0 for beta > 1/2 (h_beta(0) = 0), and at beta = 0 (mu = inf) its limit pi/2 on the diagonal
-    theta = pi alpha."""
+def _singular_weight(theta: float, alpha: float) -> tuple[float, float]:
+    """cos(theta)/beta, beta = 1 - 2 alpha (-cos(theta) h_beta(0): the singular family's weight in cos(theta) q(c-)),
+    and its theta-derivative -sin(theta)/beta, at basis exponent alpha. Both 0 for beta > 1/2 (h_beta(0) = 0); at
+    beta = 0 (mu = inf) the weight's limit pi/2 on the diagonal theta = pi alpha, and slope 0 (theta stays at pi/2)."""
     beta = 1.0 - 2.0 * alpha
     if beta > 0.5:
-        return 0.0
-    return normal_factor(theta) / beta if beta > 0.0 else 0.5 * math.pi
+        return 0.0, 0.0
+    if beta == 0.0:
+        return 0.5 * math.pi, 0.0
+    return normal_factor(theta) / beta, -math.sin(theta) / beta
 
 
 def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> CollocationSystem:

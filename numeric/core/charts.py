@@ -100,13 +100,19 @@ class Resolution:
         return self.degree if self.plain_degree is None else self.plain_degree
 
 
-#: Resolution levels 0-4, coarse to fine; level 2 is the default. Measured against level 4 over
-#: nu in [-0.5, 0.45], c in [0.01, 0.995] (``tests/test_singular_solver.py``): mu and P* to about
-#: 1e-9 (level 0), 1e-10 (1), 2e-12 (2), 3e-13 (3).
+#: Resolution levels 0-4, coarse to fine; level 2 is the default. Levels 1 and 2 hold the plain elements one degree
+#: below the singular ones: there the plain elements set the error, which then shrinks regularly with the degree,
+#: so the partner one degree lower (``partner``) bounds it. Measured over 80 (nu, c), nu in [-0.999, 0.4999],
+#: 1 - c from 0.999 down to 1.01 (1 - c_max), against degree 24 (mu and P*, relative): level 1 worst 2.6e-9, level
+#: 2 worst 4.9e-11 (median 3e-15), level 3 8e-13, the estimate above the true error at all 80 for levels 1 and 2.
+#: With every element at degree 12 (258 against 274 unknowns on average) level 2 was worst 1.3e-11 but at
+#: nu = 0.3, 1 - c = 1.1 (1 - c_max) 1.2 times above its estimate: the degree-11 partner was the more accurate
+#: (even degrees converge worse there). Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times
+#: its partner difference, ``numeric.solutions.solver.ESTIMATE_SAFETY``); lower plain degrees were worse.
 RESOLUTIONS: tuple[Resolution, ...] = (
     Resolution(degree=7, singular_degree=2),
-    Resolution(degree=9, singular_degree=2),
-    Resolution(degree=12, singular_degree=3),
+    Resolution(degree=10, singular_degree=3, plain_degree=9),
+    Resolution(degree=12, singular_degree=3, plain_degree=11),
     Resolution(degree=15, singular_degree=3),
     Resolution(degree=18, singular_degree=3),
 )
@@ -162,6 +168,13 @@ def _frozen(values, dtype) -> np.ndarray:
     return a
 
 
+#: The last plain element toward u = 0 and the last before the edge element absorb a remainder shorter than this
+#: fraction of a graded step (no sliver), and no more: merging up to half a step (1.5 times the grading's length)
+#: limited level 2 to 2e-9 in p in the slip annulus (near x = c + 0.7 (1 - c)) and, where the merge fell near
+#: x = 0, to 9e-9 in p(0) at nu = 0.3, 1 - c = 1.2e-5; holding the grading gave 3e-11 there.
+SLIVER = 0.1
+
+
 def layout(c: float, gap: float, res: Resolution) -> Layout:
     """The elements for stick radius c = 1 - gap (0 < c < 1); gap is used for 1 - c^2."""
     c2 = c * c
@@ -173,7 +186,7 @@ def layout(c: float, gap: float, res: Resolution) -> Layout:
     stick = []
     while d < c2 * (1.0 - 1e-15):  # plain stick elements, each no longer than (q - 1) x its distance to c^2
         step = d * (q - 1.0)
-        nd = c2 if d + step > c2 - 0.5 * step else d + step
+        nd = c2 if d + step > c2 - SLIVER * step else d + step
         stick.append((PLAIN, STICK, AT_C2, -nd, -d, res.plain, 0))
         d = nd
     els += stick[::-1]
@@ -184,7 +197,7 @@ def layout(c: float, gap: float, res: Resolution) -> Layout:
     a = Lc  # offset from c^2
     while a < top * (1.0 - 1e-15):  # no longer than (q - 1) x the distance to c^2, nor the distance to 1 / q
         step = min(a * (q - 1.0), (w - a) / q)
-        b = top if a + step > top - 0.5 * step else a + step
+        b = top if a + step > top - SLIVER * step else a + step
         if a < 0.5 * w:
             els.append((PLAIN, SLIP, AT_C2, a, b, res.plain, 0))
         else:

@@ -78,7 +78,7 @@ from numeric.core.graded_mesh import LEVELS as GRADED_LEVELS
 from numeric.core.linear_algebra import EquilibratedLU, equilibrate
 from numeric.core.operators import normal_factor
 from numeric.core.table import table_available, table_errors
-from numeric.solutions.solver import ERROR_FLOOR, GAP_ADHESIVE
+from numeric.solutions.solver import GAP_ADHESIVE, rounding_floor
 
 __all__ = [
     "Grid",
@@ -227,8 +227,7 @@ class HonestyCheck:
 
     ``reference_kind``: "level 4", "graded (levels 4, 3)", "closed form c_max" or "table (level 4)";
     ``reference_error``: the reference's own error estimate; ``at_floor``: the bound is the solver's
-    rounding floor ERROR_FLOOR * max(|value|, P*), where the true error lies below what any level
-    resolves.
+    rounding floor (``rounding_floor``: ERROR_FLOOR * max(|value|, P*), more below c = 2e-3), where the true error lies below what any level resolves.
     """
 
     function: str
@@ -616,15 +615,16 @@ def _spread(items: list, limit: int | None) -> list:
     return [items[i] for i in sorted(set(np.linspace(0, len(items) - 1, limit).round().astype(int)))]
 
 
-def _floor(bound: float, *values: float) -> bool:
-    return bound <= ERROR_FLOOR * max(abs(v) for v in values) * (1.0 + 1e-9)
+def _floor(p: SweepPoint, bound: float, *values: float) -> bool:
+    """Whether ``bound`` is the solver's rounding floor at p (``numeric.solutions.solver.rounding_floor``)."""
+    return bound <= rounding_floor(p.c, max(abs(v) for v in values)) * (1.0 + 1e-9)
 
 
 def _level4_checks(p: SweepPoint) -> list[HonestyCheck]:
     given_c = p.function == "flat_punch(c)"
     ref = flat_punch(nu=p.nu, c=p.argument, level=4) if given_c else flat_punch(nu=p.nu, mu=p.argument, level=4)
     name, value, reference = ("mu", p.mu, ref.mu) if given_c else ("c", p.c, ref.c)
-    floor = _floor(p.error, value, p.compliance)
+    floor = _floor(p, p.error, value, p.compliance)
     return [HonestyCheck(p.function, p.nu, p.argument, "level 4", name, value, reference, p.error, ref.error, floor),
             HonestyCheck(p.function, p.nu, p.argument, "level 4", "P*", p.compliance, ref.compliance, p.error,
                          ref.error, floor)]
@@ -635,7 +635,7 @@ def _graded_checks(p: SweepPoint, levels: tuple[int, int]) -> list[HonestyCheck]
     mu(c) at the returned c converted to c by the slope d mu/dc (and P* by dP*/dc) of the new solver
     at level 0 (a relative slope error e changes the reference c by e |c - c_ref|, negligible)."""
     fine, coarse = (graded_solve_mu(p.c, p.gamma, GRADED_LEVELS[k], mu_guess=p.mu) for k in levels)
-    floor = _floor(p.error, p.mu if p.function == "flat_punch(c)" else p.c, p.compliance)
+    floor = _floor(p, p.error, p.mu if p.function == "flat_punch(c)" else p.c, p.compliance)
     kind = f"graded (levels {levels[0]}, {levels[1]})"
     if p.function == "flat_punch(c)":
         return [HonestyCheck(p.function, p.nu, p.argument, kind, "mu", p.mu, fine.mu, p.error,
@@ -690,7 +690,7 @@ def check_honesty(points: Sequence[SweepPoint], *, max_level4: int | None = None
                                                and p.mu * p.gamma >= CLOSED_FORM_MU_GAMMA)
         if limit and p.gamma > 0.0:
             c_max = 1.0 - _gap_max(p.gamma)  # the approach A/(mu gamma) < 1e-16 is below c's rounding
-            floor = _floor(p.error, p.c, p.compliance)
+            floor = _floor(p, p.error, p.c, p.compliance)
             kind = "closed form c_max (P*: level 4)"
             try:  # the returned error bounds c and P* together: P* against level 4
                 ref = slip_limit(p.nu, level=4) if p.function == "slip_limit" else \

@@ -222,8 +222,8 @@ def _honesty(report: StabilityReport) -> list[str]:
              "Ratio = max over the quantities of |value - reference| / error at each point (the returned error "
              "bounds mu (or c) and P* together). It must not exceed 1 (never optimistic) and should be at least "
              "0.1 (within 10x). 'Measurable': the reference's own error is below a tenth of the bound (else the "
-             "comparison is 'unresolved') and the bound is above the rounding floor (ERROR_FLOOR times the value, "
-             "'floor'), so the ratio measures the estimate; elsewhere only ratio <= 1 is checked. 'Optimistic': "
+             "comparison is 'unresolved') and the bound is above the rounding floor (ERROR_FLOOR times the value, more "
+             "below c = 2e-3: 'floor'), so the ratio measures the estimate; elsewhere only ratio <= 1 is checked. 'Optimistic': "
              "beyond the bound by more than the reference's own error; 'inconclusive': beyond it by less.", ""]
     lines += ["| reference | points | ratio <= 0.01 | 0.01 - 0.1 | 0.1 - 1 | > 1 | optimistic | measurable | "
               "measurable within 10x | at the floor |", "|---|---|---|---|---|---|---|---|---|---|"]

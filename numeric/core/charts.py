@@ -61,7 +61,7 @@ from numeric.core.quadrature import gauss_legendre, legendre_values
 
 __all__ = [
     "PLAIN", "STICK_END", "SLIP_END", "EDGE", "STICK", "SLIP", "AT_C2", "AT_ONE",
-    "Resolution", "RESOLUTIONS", "partner", "Layout", "layout", "h_beta", "family_factors", "basis_values",
+    "Resolution", "RESOLUTIONS", "partner", "Layout", "SLIVER", "layout", "h_beta", "family_factors", "basis_values",
     "FEW_POINTS", "shifted_legendre", "chart_offset", "chart_of_offset", "COLLOCATION_POWER", "collocation_chart", "collocation",
     "pins_stick_pressure", "pinned_rows",
 ]

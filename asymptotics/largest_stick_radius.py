@@ -32,6 +32,7 @@ References
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import mpmath
 import numpy as np
@@ -65,6 +66,17 @@ def largest_stick_radius_gap(gamma: ArrayLike) -> np.ndarray | float:
     >>> f"{float(largest_stick_radius_gap(0.5)):.12e}"   # nu = 0
     '1.002998542160e-03'
     """
+    if np.ndim(gamma) == 0 and isinstance(gamma, (float, np.floating)):
+        return _gap_scalar(float(gamma))  # a solve asks for it several times at one gamma
+    return _gap(gamma)
+
+
+@lru_cache(maxsize=64)
+def _gap_scalar(gamma: float) -> float:
+    return _gap(gamma)
+
+
+def _gap(gamma: ArrayLike) -> np.ndarray | float:
     q = np.asarray(nome(gamma), dtype=float)
     n = np.arange(1, _TERMS + 1)
     odd, even = n[n % 2 == 1], n[n % 2 == 0]

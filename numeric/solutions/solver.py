@@ -79,8 +79,8 @@ ROUNDING_ULPS = 4.0
 #: mu between levels 2, 3 and 4 (each level's round-off, not discretisation: they scatter without converging;
 #: mpmath on the level-0 system at nu = 0.3, c = 1e-4 puts the double root 8e-12 relative off) over
 #: nu in {-0.5, 0, 0.3, 0.45} is 1.6e-11, 1.3e-11, 3.7e-12, 4.8e-13, 2.0e-13, 8e-14 at c = 1e-5, 3e-5, 1e-4,
-#: 3e-4, 1e-3, 3e-3 (P* ~ 1 is the scale there); the floor 2e-13 max(1, 2e-3/c) is 4e-11, 1.3e-11, 4e-12,
-#: 1.3e-12, 4e-13, 2e-13: above each, and within 3x of the largest below c = 1e-4.
+#: 3e-4, 1e-3, 3e-3 (P* ~ 1 is the scale there); the floor (then 2e-13) max(1, 2e-3/c) was 4e-11, 1.3e-11, 4e-12,
+#: 1.3e-12, 4e-13, 2e-13: above each, and within 3x of the largest below c = 1e-4 (with ERROR_FLOOR = 5e-13, 2.5x higher).
 SMALL_C_ROUNDING = 2e-3
 #: The error estimate of each level is its difference from the partner one degree lower times this factor. Level 0
 #: converges erratically next to c_max: over 80 (nu, c) (``numeric.core.charts.RESOLUTIONS``) its true error was up

@@ -100,19 +100,21 @@ class Resolution:
         return self.degree if self.plain_degree is None else self.plain_degree
 
 
-#: Resolution levels 0-4, coarse to fine; level 2 is the default. Levels 1 and 2 hold the plain elements one degree
-#: below the singular ones: there the plain elements set the error, which then shrinks regularly with the degree,
-#: so the partner one degree lower (``partner``) bounds it. Measured over 80 (nu, c), nu in [-0.999, 0.4999],
-#: 1 - c from 0.999 down to 1.01 (1 - c_max), against degree 24 (mu and P*, relative): level 1 worst 2.6e-9, level
-#: 2 worst 4.9e-11 (median 3e-15), level 3 8e-13, the estimate above the true error at all 80 for levels 1 and 2.
-#: With every element at degree 12 (258 against 274 unknowns on average) level 2 was worst 1.3e-11 but at
-#: nu = 0.3, 1 - c = 1.1 (1 - c_max) 1.2 times above its estimate: the degree-11 partner was the more accurate
-#: (even degrees converge worse there). Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times
-#: its partner difference, ``numeric.solutions.solver.ESTIMATE_SAFETY``); lower plain degrees were worse.
+#: Resolution levels 0-4, coarse to fine; level 2 is the default. Levels 1 and 2 hold the plain elements below the
+#: singular ones (degree 9 against 10, 11 against 13): there the plain elements set the error of mu, which then shrinks
+#: regularly with the degree, so the partner one degree lower (``partner``) bounds it. Measured over 80 (nu, c), nu in
+#: [-0.999, 0.4999], 1 - c from 0.999 down to 1.01 (1 - c_max), against degree 24 (mu and P*, relative): level 1 worst
+#: 2.6e-9, level 2 worst 4.9e-11 (median 3e-15; 262 unknowns on average), level 3 8e-13, the estimate above the true
+#: error at all 80 for levels 1 and 2. With every element at degree 12 (274 unknowns) level 2 was worst 1.3e-11 but
+#: at nu = 0.3, 1 - c = 1.1 (1 - c_max) 1.2 times above its estimate: the degree-11 partner was the more accurate (even
+#: plain degrees converge worse there; plain 12 under singular 13 fell 1.03 times short at the same point). The
+#: singular elements at 13 rather than 12 (4 more unknowns) bring p and q at x = c next to c_max from 1.8e-9 to 1.1e-9
+#: of level 4. Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times its partner difference,
+#: ``numeric.solutions.solver.ESTIMATE_SAFETY``); lower plain degrees were worse.
 RESOLUTIONS: tuple[Resolution, ...] = (
     Resolution(degree=7, singular_degree=2),
     Resolution(degree=10, singular_degree=3, plain_degree=9),
-    Resolution(degree=12, singular_degree=3, plain_degree=11),
+    Resolution(degree=13, singular_degree=3, plain_degree=11),
     Resolution(degree=15, singular_degree=3),
     Resolution(degree=18, singular_degree=3),
 )

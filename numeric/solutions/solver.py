@@ -84,7 +84,8 @@ ROUNDING_ULPS = 4.0
 SMALL_C_ROUNDING = 2e-3
 #: The error estimate of each level is its difference from the partner one degree lower times this factor. Level 0
 #: converges erratically next to c_max: over 80 (nu, c) (``numeric.core.charts.RESOLUTIONS``) its true error was up
-#: to 6.4 times the difference (nu = 0, 1 - c = 1.5 (1 - c_max)), at two points above it; the other levels' never.
+#: to 6.4 times the difference (nu = 0, 1 - c = 1.5 (1 - c_max)), at two points above it; at levels 1-3 never (level 4
+#: is the reference).
 ESTIMATE_SAFETY = (10.0, 1.0, 1.0, 1.0, 1.0)
 #: Typical relative accuracy of each level (the worst measured, ``RESOLUTIONS``); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {0: 1e-7, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}

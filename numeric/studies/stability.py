@@ -227,7 +227,8 @@ class HonestyCheck:
 
     ``reference_kind``: "level 4", "graded (levels 4, 3)", "closed form c_max" or "table (level 4)";
     ``reference_error``: the reference's own error estimate; ``at_floor``: the bound is the solver's
-    rounding floor (``rounding_floor``: ERROR_FLOOR * max(|value|, P*), more below c = 2e-3), where the true error lies below what any level resolves.
+    rounding floor (``rounding_floor``: ERROR_FLOOR * max(|value|, P*), more below c = 2e-3), where the true error
+    lies below what any level resolves.
     """
 
     function: str

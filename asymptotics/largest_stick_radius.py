@@ -66,7 +66,7 @@ def largest_stick_radius_gap(gamma: ArrayLike) -> np.ndarray | float:
     >>> f"{float(largest_stick_radius_gap(0.5)):.12e}"   # nu = 0
     '1.002998542160e-03'
     """
-    if np.ndim(gamma) == 0 and isinstance(gamma, (float, np.floating)):
+    if isinstance(gamma, (float, np.floating)):
         return _gap_scalar(float(gamma))  # a solve asks for it several times at one gamma
     return _gap(gamma)
 

@@ -28,7 +28,7 @@ basis function as beta -> 1 (mu gamma -> 0, where it tends to s log s) and as be
 (mu -> inf, log s: the limit problem of the largest stick radius).
 
 The stick pressure P shares the stick end's basis with the shear Q, but for beta <= 1/2 (mu gamma >= 1) its
-coefficients of the singular family are pinned to 0 (``pins_stick_pressure``, ``pinned_rows``). Left free
+coefficients of the singular family are pinned to 0 (``numeric.core.stick_pressure_pins``). Left free
 there, they were undetermined (noise along one direction, of either sign between degrees) and made a
 near-null vector of the system concentrated at x = c, as h_beta tends to log s: at nu = 0, c = 0.9988
 (mu = 16.8, degree 12) the equilibrated system's least singular value was 2.4e-13 (the next 1.6e-9) and
@@ -63,7 +63,6 @@ __all__ = [
     "PLAIN", "STICK_END", "SLIP_END", "EDGE", "STICK", "SLIP", "AT_C2", "AT_ONE",
     "Resolution", "RESOLUTIONS", "partner", "Layout", "SLIVER", "layout", "h_beta", "family_factors", "basis_values",
     "FEW_POINTS", "shifted_legendre", "chart_offset", "chart_of_offset", "COLLOCATION_POWER", "collocation_chart", "collocation",
-    "pins_stick_pressure", "pinned_rows",
 ]
 
 PLAIN, STICK_END, SLIP_END, EDGE = 0, 1, 2, 3
@@ -313,26 +312,6 @@ def chart_of_offset(lay: Layout, e: int, offset: np.ndarray) -> np.ndarray:
         return np.clip((offset - lay.lo[e]) / L, 0.0, 1.0)
     sign = 1.0 if kind == SLIP_END else -1.0
     return np.sqrt(np.clip(sign * offset / L, 0.0, 1.0))
-
-
-def pins_stick_pressure(alpha: float) -> bool:
-    """Whether the stick pressure's singular family at c is pinned to 0 at basis exponent alpha: from alpha = 1/4 on
-    (mu gamma >= 1; beta = 1 - 2 alpha <= 1/2 here, 1/2 - alpha <= 1/4 in the plane solver), where the family tends to
-    log s and, left free, made a near-null vector of the system (module docstring). The same rule in both geometries."""
-    return alpha >= 0.25
-
-
-def pinned_rows(n: int, k: int) -> np.ndarray:
-    """The k of the stick end's n collocation points (counted from c) whose rows of the normal equation ((2.2a); (N)
-    in the plane solver) pin the stick pressure's singular coefficients to 0: every (n // k)-th from the second on.
-
-    Without those coefficients the system has k more equations than unknowns, and the k dropped must be of the normal
-    equation, which determines p: as gamma -> 0 the tangential one alone determines q (dropping k of its rows left q
-    undetermined at gamma = 1e-30). Which k of the points matters: measured on the axisymmetric system at nu = 0,
-    c = 0.9988 (mu = 16.8) and c = 0.99895, degrees 12 ... 22, the spread choice keeps mu within 1e-12 of the degree-18
-    solution and p at x = c within 1e-9 (the k points farthest from c put mu 1e-10 off, the k nearest 7e-7 in p, the
-    k in the middle 1e-9 in mu at c = 1e-3)."""
-    return 1 + (n // k) * np.arange(k)
 
 
 #: Collocation points on a singular element are r^POWER at the Gauss points r of [0, 1]: the enriched

@@ -15,7 +15,7 @@ the families that carry alpha are contracted per alpha from cached nodes.
 
 The eigenvalue condition is phi(c-) = 0, phi = p - q/mu (2.11), the same as chi(c) = 0
 (2.13) and q/(mu p) -> 1 at c (§4.1). The stick pressure has no singular family
-(``numeric.core.charts``: for beta <= 1/2 its coefficients are pinned to 0, above h_beta(0) = 0), so
+(``numeric.core.stick_pressure_pins``: for beta <= 1/2 its coefficients are pinned to 0, above h_beta(0) = 0), so
 p(c-) = a_P, the regular part, and q(c-) = c (a_Q + h_beta(0) b_Q) with h_beta(0) = -1/beta for
 beta <= 1/2 (0 above). The functional returned is
 mu cos(theta) phi(c-) = sin(theta)/gamma a_P - c cos(theta) a_Q + c (cos(theta)/beta) b_Q:
@@ -40,9 +40,10 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      outside_projector,
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
-from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors, pinned_rows,
-                                 pins_stick_pressure, shifted_legendre)
+from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors,
+                                 shifted_legendre)
 from numeric.core.linear_algebra import pin_to_zero
+from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
 __all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
 

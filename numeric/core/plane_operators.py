@@ -41,11 +41,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from numeric.core.charts import pinned_rows, pins_stick_pressure
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
 from numeric.core.quadrature import gauss_legendre
+from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
                                        element_families)
 
@@ -255,9 +255,9 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     at c for mu = inf).
 
     Nor has the admissible local solution (c - x)^(1/2 - alpha), or any with cot(pi lam) = mu gamma, p on the stick
-    side: from alpha = 1/4 on (``numeric.core.charts.pins_stick_pressure``; ``pinned`` overrides, so that the two
+    side: from alpha = 1/4 on (``numeric.core.stick_pressure_pins.pins_stick_pressure``; ``pinned`` overrides, so that the two
     assemblies of a difference quotient in alpha agree) p's coefficients of h_beta on the stick end are pinned to 0 in
-    (N) rows at the stick end's points ``numeric.core.charts.pinned_rows``, as in the axisymmetric system. Left free,
+    (N) rows at the stick end's points ``numeric.core.stick_pressure_pins.pinned_rows``, as in the axisymmetric system. Left free,
     they made a near-null vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
     system's least singular value rose from 2.2e-11 to 7.9e-9 with the pins, mu moved from 2e-12 to 1e-13 of the
     degree-24 solution and p at x = c from 7e-9 to 8e-12 (nu = -1/2, c = 0.93: 3e-10 to 3e-13 in mu, 9e-7 to 1e-11 in

@@ -186,19 +186,15 @@ def sqrt_near_outside_rule(d: np.ndarray, degree: int) -> tuple[np.ndarray, np.n
     return np.minimum(S, 1.0), W
 
 
-def sqrt_outside_kernel(S: np.ndarray, one_minus: np.ndarray, d: np.ndarray) -> np.ndarray:
-    """Kernel factor (rows, q) for points with s_v^2 = d outside [0, 1].
+def sqrt_outside_kernel(S: np.ndarray, one_minus: np.ndarray, d: np.ndarray, before: bool) -> np.ndarray:
+    """Kernel factor (rows, q) for points with s_v^2 = d outside [0, 1], all on one side.
 
-    d <= 0 (the point beyond the singular end, at distance e^2 = -d): s / sqrt(s^2 + e^2);
-    d >= 1 (beyond the far end): s / sqrt(d - s^2), with d - s^2 = (d - 1) + (1 - s)(1 + s).
+    ``before`` (d <= 0, the points beyond the singular end, at distance e^2 = -d): s / sqrt(s^2 + e^2);
+    else (d >= 1, beyond the far end): s / sqrt(d - s^2), with d - s^2 = (d - 1) + (1 - s)(1 + s).
     """
-    before = d <= 0.0
-    out = np.empty((d.size, S.size))
-    if np.any(before):
-        out[before] = S[None, :] / np.sqrt(S[None, :] ** 2 - d[before][:, None])
-    if np.any(~before):
-        out[~before] = S[None, :] / np.sqrt((d[~before] - 1.0)[:, None] + (one_minus * (1.0 + S))[None, :])
-    return out
+    if before:
+        return S[None, :] / np.sqrt(S[None, :] ** 2 - d[:, None])
+    return S[None, :] / np.sqrt((d - 1.0)[:, None] + (one_minus * (1.0 + S))[None, :])
 
 
 def plain_inside_rule(xi_v: np.ndarray, nq: int, upper: bool) -> tuple[np.ndarray, np.ndarray]:

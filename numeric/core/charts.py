@@ -55,7 +55,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import special
 
 from numeric.core.quadrature import gauss_legendre, legendre_values
 
@@ -225,10 +224,10 @@ def h_beta(beta: float, s: np.ndarray) -> np.ndarray:
     ls = np.log(np.where(pos, s, 1.0))
     if beta > 0.5:
         d = beta - 1.0
-        out = s * (ls if d == 0.0 else special.expm1(d * ls) / d)
+        out = s * (ls if d == 0.0 else np.expm1(d * ls) / d)
         at_zero = 0.0
     else:
-        out = ls if beta == 0.0 else special.expm1(beta * ls) / beta
+        out = ls if beta == 0.0 else np.expm1(beta * ls) / beta
         at_zero = -np.inf if beta == 0.0 else -1.0 / beta
     return np.where(pos, out, at_zero)
 

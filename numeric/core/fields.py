@@ -189,7 +189,8 @@ class SingularField:
             return out
         lay = self.layout
         xs = x[outer]
-        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=np.flatnonzero(lay.zone == SLIP))
+        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=np.flatnonzero(lay.zone == SLIP),
+                            divided=False)
         total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self._u_star_coefficients
         out[outer] = (2.0 / math.pi) * total / xs
         return out

@@ -86,7 +86,8 @@ class AbelMatrices:
     ``upper``/``lower``: int_{u > v} and int_{u < v} of phi(u) du / (2 sqrt|u - v|); ``upper_x``/``lower_x``:
     the same of phi(u)/sqrt(u) (filled in the slip columns only, where q = R sin(theta)/gamma is not divided
     by x); ``integral``, ``integral_x``: int phi du and int phi/sqrt(u) du over each element. Columns of
-    elements not asked for are 0.
+    elements not asked for are 0; what was not formed (a name not asked for, the divided integrals without
+    ``AbelOperators``' ``divided``) is empty.
     """
 
     upper: np.ndarray
@@ -131,28 +132,32 @@ class AbelOperators:
     """The Abel integrals of every basis function of a layout at given points.
 
     ``matrices(alpha)`` gives them as an ``AbelMatrices``. Points default to the collocation points (whose rules
-    on their own element are cached); ``names`` ("upper", "lower") and ``elements`` restrict what is formed.
+    on their own element are cached); ``names`` ("upper", "lower") and ``elements`` restrict what is formed, and
+    ``divided=False`` leaves out the integrals of phi/sqrt(u) (``AbelMatrices.upper_x`` ...: 0).
     What does not depend on alpha (every plain element, the regular family of the elements touching c^2) is
     formed here, once per layout and point set; the families that carry alpha are kept as quadrature terms
     (weights, nodes, Legendre values) and contracted per alpha.
     """
 
     def __init__(self, lay: Layout, points: tuple[np.ndarray, np.ndarray] | None = None,
-                 names: tuple[str, ...] = NAMES, elements: np.ndarray | None = None) -> None:
+                 names: tuple[str, ...] = NAMES, elements: np.ndarray | None = None, divided: bool = True) -> None:
         self.layout = lay
         collocated = points is None
         anchor, offset = collocation(lay)[:2] if collocated else points
         self.x = np.sqrt(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)
         N, nb = self.x.size, int(lay.starts[-1])
         self.names = tuple(n for n in NAMES if n in names)
+        self.divided = divided
         elements = np.arange(len(lay)) if elements is None else np.asarray(elements)
         # A_e - v for every (point, element): offsets from the element's anchor
         ae = lay.anchor[elements]
         rel = np.where(anchor[:, None] == ae[None, :], 0.0, np.where(ae == AT_C2, -lay.w, lay.w)[None, :]) - offset[:, None]
         owner = np.repeat(np.arange(len(lay)), lay.n_basis) if collocated else np.full(N, -1)
         own = owner[:, None] == elements[None, :]
-        self._fixed = {key: np.zeros((N, nb)) for key in self.names + tuple(n + "/x" for n in self.names)}
-        self._fixed["integral"], self._fixed["integral/x"] = np.zeros(nb), np.zeros(nb)
+        self._fixed = {key: np.zeros((N, nb)) for key in self.names + (tuple(n + "/x" for n in self.names) if divided else ())}
+        self._fixed["integral"] = np.zeros(nb)
+        if divided:
+            self._fixed["integral/x"] = np.zeros(nb)
         is_plain = lay.kind[elements] == PLAIN
         if np.any(is_plain):
             self._plain(elements[is_plain], rel[:, is_plain], own[:, is_plain], collocated)
@@ -170,6 +175,7 @@ class AbelOperators:
                             target[cols] = block[0]
                         else:
                             target[t.rows, cols] = block
+        self._nodes = _node_sets(lay, self._terms)
 
     def _plain(self, E: np.ndarray, rel: np.ndarray, own: np.ndarray, collocated: bool) -> None:
         """All plain elements E at once (they share degree and rules): rel, own are (points, elements)."""
@@ -187,22 +193,24 @@ class AbelOperators:
         d_lo, d_hi = rel + lo[None, :], rel + (lo + L)[None, :]
         inside = ~own & (d_lo <= 0.0) & (d_hi >= 0.0)
         cols = (lay.starts[E][:, None] + np.arange(m)[None, :]).ravel()
-        slip_cols = (lay.starts[E][lay.zone[E] == SLIP][:, None] + np.arange(m)[None, :]).ravel()
-        slip = lay.zone[E] == SLIP
+        slip = (lay.zone[E] == SLIP) & self.divided  # the elements whose integrals of phi/sqrt(u) are formed
         slip_k = np.flatnonzero(slip)
+        slip_index = np.cumsum(slip) - 1  # k -> its place among slip_k
+        slip_cols = (lay.starts[E[slip_k]][:, None] + np.arange(m)[None, :]).ravel()
+        rL = np.sqrt(L)
         for name in self.names:
             upper = name == "upper"
             M = np.zeros((N, E.size, m))
-            Mx = np.zeros((N, E.size, m))
+            Mx = np.zeros((N, slip_k.size, m))
             if collocated:  # own points: the same rule on every element, scaled by sqrt(L)
                 S, W, P = plain_self_rule(m, nq, upper, deg)
-                u_own = (A + lo)[:, None, None] + L[:, None, None] * S[None]  # (E, m, nq)
                 rows = (lay.starts[E][:, None] + np.arange(m)[None, :]).ravel()
-                k_of_row = np.repeat(np.arange(E.size), m)
-                rL = np.sqrt(L)[:, None, None]
-                M[rows, k_of_row] = (rL * _weighted_sum(W, P)[None]).reshape(-1, m)
-                Mx[rows, k_of_row] = (rL * np.matmul((W[None] / np.sqrt(u_own))[:, :, None, :], P[None])[:, :, 0, :]
-                                      ).reshape(-1, m)
+                M[rows, np.repeat(np.arange(E.size), m)] = (rL[:, None, None] * _weighted_sum(W, P)[None]).reshape(-1, m)
+                if slip_k.size:
+                    u_own = (A + lo)[slip_k, None, None] + L[slip_k, None, None] * S[None]  # (slip elements, m, nq)
+                    Wx = (W[None] / np.sqrt(u_own))[:, :, None, :]
+                    Mx[slip_cols, np.repeat(np.arange(slip_k.size), m)] = (
+                        rL[slip_k, None, None] * np.matmul(Wx, P[None])[:, :, 0, :]).reshape(-1, m)
             side = ~own & ~inside & ((d_lo > 0.0) if upper else (d_hi < 0.0))
             distance = d_lo if upper else -d_hi
             near = side & (distance < near_plain(deg) * L[None, :])
@@ -213,23 +221,27 @@ class AbelOperators:
                 W = np.empty((i.size, nq))
                 if np.any(in_pair):
                     Si, Wi = plain_inside_rule(np.clip(-d_lo[i, k][in_pair] / L[k][in_pair], 0.0, 1.0), nq, upper)
-                    S[in_pair], W[in_pair] = Si, Wi * np.sqrt(L[k][in_pair])[:, None]
+                    S[in_pair], W[in_pair] = Si, Wi * rL[k][in_pair][:, None]
                 if np.any(~in_pair):
                     S[~in_pair], W[~in_pair] = plain_outside_rule(L[k][~in_pair], d_lo[i, k][~in_pair],
                                                                   d_hi[i, k][~in_pair], upper, nq)
                 P = shifted_legendre(deg, S)
                 M[i, k] = _weighted_sum(W, P)
-                Mx[i, k] = _weighted_sum(W / np.sqrt((A + lo)[k][:, None] + L[k][:, None] * S), P)
+                on = slip[k]
+                if np.any(on):
+                    ks = k[on]
+                    Mx[i[on], slip_index[ks]] = _weighted_sum(W[on] / np.sqrt((A + lo)[ks][:, None] + L[ks][:, None] * S[on]),
+                                                              P[on])
             i, k = np.nonzero(side & ~near)
             if i.size:  # the kernel is smooth on the element: one Gauss rule
                 Kf = (0.5 * L[k][:, None] * wq[None, :]) / np.sqrt(np.abs(d_lo[i, k][:, None] + L[k][:, None] * xq[None, :]))
                 M[i, k] = Kf @ Pq
-                on_slip = slip[k]
-                if np.any(on_slip):
-                    Mx[i[on_slip], k[on_slip]] = (Kf[on_slip] * inv_x[k[on_slip]]) @ Pq
+                on = slip[k]
+                if np.any(on):
+                    Mx[i[on], slip_index[k[on]]] = (Kf[on] * inv_x[k[on]]) @ Pq
             self._fixed[name][:, cols] = M.reshape(N, -1)
             if slip_k.size:
-                self._fixed[name + "/x"][:, slip_cols] = Mx[:, slip_k].reshape(N, -1)
+                self._fixed[name + "/x"][:, slip_cols] = Mx.reshape(N, -1)
         self._fixed["integral"][cols] = (L[:, None] * (wq @ Pq)[None, :]).ravel()
         if slip_k.size:
             self._fixed["integral/x"][slip_cols] = (L[slip_k, None] * ((wq[None, :] * inv_x[slip_k]) @ Pq)).ravel()
@@ -238,17 +250,19 @@ class AbelOperators:
         """The quadrature terms of singular element e for every point, per name."""
         lay = self.layout
         L, m, deg = lay.length(e), int(lay.n_basis[e]), int(lay.degree[e])
-        slip = lay.zone[e] == SLIP
+        slip = lay.zone[e] == SLIP and self.divided  # the integrals of phi/sqrt(u) too
         A = lay.anchor_value(e)
         sign = 1.0 if lay.kind[e] == SLIP_END else -1.0  # u = A + sign L s^2
         rL = math.sqrt(L)
         d = -sign * rel / L  # s_v^2 of every point
         inside = ~own & (d > 0.0) & (d < 1.0)
+        inside_any = bool(inside.any())
         So, Wo, one_minus, Po = sqrt_outside_nodes(deg)
         Sc, one_minus_c = chebyshev_points01()
         projector = outside_projector(deg)
-        u_o = A + sign * L * So * So
-        u_c = A + sign * L * Sc * Sc
+        if slip:
+            u_o = A + sign * L * So * So
+            u_c = A + sign * L * Sc * Sc
         out: dict[str, list[_Term]] = {}
         own_rows = np.flatnonzero(own)
         for away in (True, False):
@@ -260,7 +274,7 @@ class AbelOperators:
             if own_rows.size:
                 S, W, P = sqrt_self_rule(int(lay.kind[e]), m, away, deg)
                 terms.append(_Term(own_rows, rL * W, S, P, False))
-            if np.any(inside):
+            if inside_any:
                 S, W = sqrt_inside_rule(np.sqrt(d[inside]), away, deg)
                 terms.append(_Term(np.flatnonzero(inside), rL * W, S, shifted_legendre(deg, S), False))
             side = ~own & ~inside & ((d <= 0.0) if away else (d >= 1.0))
@@ -270,11 +284,11 @@ class AbelOperators:
                 far[:] = False
             rows = np.flatnonzero(side & ~near & ~far)
             if rows.size:
-                terms.append(_Term(rows, rL * Wo[None, :] * sqrt_outside_kernel(So, one_minus, d[rows]), So, Po, True))
+                terms.append(_Term(rows, rL * Wo[None, :] * sqrt_outside_kernel(So, one_minus, d[rows], away), So, Po, True))
             rows = np.flatnonzero(far)
             if rows.size:
-                terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows]), So, Po, True, projector))
-            if np.any(near):
+                terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows], away), So, Po, True, projector))
+            if near.any():
                 S, W = sqrt_near_outside_rule(d[near], deg)
                 terms.append(_Term(np.flatnonzero(near), rL * W, S, shifted_legendre(deg, S), False))
             out[name] = terms
@@ -291,31 +305,37 @@ class AbelOperators:
         """The Abel integrals at basis exponent alpha; ``displacement`` uses the families of u* (``family_factors``)."""
         lay = self.layout
         out = {key: value.copy() for key, value in self._fixed.items()}
+        # the family factors at every node of a family (the two ends share theirs), one call each
+        values = {family: family_factors(family, flat, alpha, displacement)
+                  for family, (flat, _) in self._nodes.items()}
+        bases: dict = {}  # tabulated and projected bases per (family, node set, columns)
         for e, blocks in self._terms.items():
             kind, sdeg = int(lay.kind[e]), int(lay.singular_degree[e])
+            family = _family(kind)
+            flat_regular, flat_singular = values[family]
+            where = self._nodes[family][1]
             start, head = int(lay.starts[e]), int(lay.degree[e]) + 1
             only_singular = kind != EDGE and not displacement  # the regular family is in the fixed part
             cols = slice(start + head, int(lay.starts[e + 1])) if only_singular else slice(start, int(lay.starts[e + 1]))
-            factors: dict = {}  # family factors, tabulated and projected bases per node set
             for key, terms in blocks.items():
                 target = out[key]
                 for t in terms:
-                    if id(t.S) not in factors:
-                        factors[id(t.S)] = family_factors(kind, t.S, alpha, displacement)
-                    regular, singular = factors[id(t.S)]
+                    part = where[id(t.S)]
+                    singular = flat_singular[part].reshape(t.S.shape)
+                    regular = None if flat_regular is None else flat_regular[part].reshape(t.S.shape)
                     if t.shared:
-                        key_basis = (id(t.S), "basis")
-                        if key_basis not in factors:
+                        key_basis = (family, id(t.S), sdeg, only_singular)
+                        if key_basis not in bases:
                             basis = singular[:, None] * t.P[:, : sdeg + 1]
                             if not only_singular:
                                 basis = np.concatenate([t.P if regular is None else regular[:, None] * t.P, basis], axis=1)
-                            factors[key_basis] = basis
-                        basis = factors[key_basis]
+                            bases[key_basis] = basis
+                        basis = bases[key_basis]
                         if t.projector is not None:
-                            key_projected = (id(t.S), id(t.projector))
-                            if key_projected not in factors:
-                                factors[key_projected] = t.projector @ basis
-                            block = t.W @ factors[key_projected]
+                            key_projected = key_basis + (id(t.projector),)
+                            if key_projected not in bases:
+                                bases[key_projected] = t.projector @ basis
+                            block = t.W @ bases[key_projected]
                         else:
                             block = t.W @ basis
                     else:
@@ -329,7 +349,27 @@ class AbelOperators:
                         target[t.rows, cols] = block
         empty = np.zeros((self.x.size, 0))
         return AbelMatrices(out.get("upper", empty), out.get("lower", empty), out.get("upper/x", empty),
-                            out.get("lower/x", empty), out["integral"], out["integral/x"])
+                            out.get("lower/x", empty), out["integral"], out.get("integral/x", np.zeros(0)))
+
+
+def _family(kind: int) -> int:
+    """The kind whose families an element of this kind carries: the stick and slip ends share h_beta."""
+    return EDGE if kind == EDGE else SLIP_END
+
+
+def _node_sets(lay: Layout, terms: dict[int, dict[str, list[_Term]]]) -> dict[int, tuple[np.ndarray, dict]]:
+    """Every distinct node set of the singular elements' terms, per family (``_family``): all nodes in one flat
+    array, and the slice of each node set (by identity) in it, so that ``matrices`` forms each family's factors
+    in one call."""
+    out: dict[int, tuple[list, dict]] = {}
+    for e, blocks in terms.items():
+        chunks, where = out.setdefault(_family(int(lay.kind[e])), ([], {}))
+        for t in (t for ts in blocks.values() for t in ts):
+            if id(t.S) not in where:
+                size = sum(c.size for c in chunks)
+                where[id(t.S)] = slice(size, size + t.S.size)
+                chunks.append(t.S.ravel())
+    return {family: (np.concatenate(chunks), where) for family, (chunks, where) in out.items()}
 
 
 @dataclass(frozen=True, slots=True, eq=False)

@@ -57,6 +57,7 @@ class SingularField:
         self.c = self.layout.c
         self.gap = self.layout.gap  # 1 - c, formed without cancellation
         self.n_unknowns = solution.coefficients.size
+        self._kept: dict[int, tuple[bytes, list]] = {}  # the last points' basis per zone (``_basis_at``)
         ns = sys.n_stick
         z = solution.coefficients
         self._P, self._Q, self._R = z[:ns], z[ns:2 * ns], z[2 * ns:]
@@ -88,28 +89,41 @@ class SingularField:
 
     def _evaluate(self, x: np.ndarray, zone: int, coefficients: np.ndarray) -> np.ndarray:
         """Sum of the basis of the elements of ``zone`` at points x (which must lie in that zone)."""
-        lay = self.layout
-        anchor, offset = point_offsets(lay, x)
         out = np.zeros(x.shape)
-        if x.size == 0:
-            return out
-        elements = np.flatnonzero(lay.zone == zone)
-        ae = lay.anchor[elements]
-        off = offset[:, None] + np.where(anchor[:, None] == ae[None, :], 0.0,
-                                         np.where(ae == AT_C2, lay.w, -lay.w)[None, :])  # offsets from each A_e
-        kind = lay.kind[elements]
-        lo = np.where(kind == PLAIN, lay.lo[elements], np.where(kind == SLIP_END, 0.0, -lay.hi[elements]))
-        hi = np.where(kind == PLAIN, lay.hi[elements], np.where(kind == SLIP_END, lay.hi[elements], 0.0))
-        which = np.argmax((off >= lo[None, :]) & (off <= hi[None, :]), axis=1)  # the first element holding the point
-        base = 0 if zone == STICK else lay.n_stick
-        for k in np.unique(which):
-            e = int(elements[k])
-            rows = np.flatnonzero(which == k)
-            s = chart_of_offset(lay, e, off[rows, k])
-            if lay.kind[e] == SLIP_END or lay.kind[e] == STICK_END:
-                s = self._off_the_layer(e, s)
-            out[rows] = basis_values(lay, e, s, self.alpha) @ coefficients[lay.starts[e] - base: lay.starts[e + 1] - base]
+        base = 0 if zone == STICK else self.layout.n_stick
+        for rows, first, last, values in self._basis_at(x, zone):
+            out[rows] = values @ coefficients[first - base: last - base]
         return out
+
+    def _basis_at(self, x: np.ndarray, zone: int) -> list[tuple[np.ndarray, int, int, np.ndarray]]:
+        """Per element of ``zone`` holding some of the points x: their rows, the element's unknowns (first, last)
+        and its basis there. The last point set of each zone is kept: p and q at the same points (``pressure``,
+        ``shear``) tabulate the basis once."""
+        key = x.tobytes()
+        kept = self._kept.get(zone)
+        if kept is not None and kept[0] == key:
+            return kept[1]
+        lay = self.layout
+        parts = []
+        if x.size:
+            anchor, offset = point_offsets(lay, x)
+            elements = np.flatnonzero(lay.zone == zone)
+            ae = lay.anchor[elements]
+            off = offset[:, None] + np.where(anchor[:, None] == ae[None, :], 0.0,
+                                             np.where(ae == AT_C2, lay.w, -lay.w)[None, :])  # offsets from each A_e
+            kind = lay.kind[elements]
+            lo = np.where(kind == PLAIN, lay.lo[elements], np.where(kind == SLIP_END, 0.0, -lay.hi[elements]))
+            hi = np.where(kind == PLAIN, lay.hi[elements], np.where(kind == SLIP_END, lay.hi[elements], 0.0))
+            which = np.argmax((off >= lo[None, :]) & (off <= hi[None, :]), axis=1)  # the first element holding the point
+            for k in np.unique(which):
+                e = int(elements[k])
+                rows = np.flatnonzero(which == k)
+                s = chart_of_offset(lay, e, off[rows, k])
+                if lay.kind[e] == SLIP_END or lay.kind[e] == STICK_END:
+                    s = self._off_the_layer(e, s)
+                parts.append((rows, int(lay.starts[e]), int(lay.starts[e + 1]), basis_values(lay, e, s, self.alpha)))
+        self._kept[zone] = (key, parts)
+        return parts
 
     def _off_the_layer(self, e: int, s: np.ndarray) -> np.ndarray:
         """Chart points s of an element at c, with s = 0 (x = c itself) moved to the nearest double x on the

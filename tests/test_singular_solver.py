@@ -58,14 +58,15 @@ def test_agrees_with_the_graded_solver(c, nu):
 @pytest.mark.parametrize("c, nu", [(0.5, 0.0), (0.9, -0.5), (0.97, -0.5), (0.3, 0.45)])
 def test_stresses_converge_at_every_point_including_c_and_the_edge(c, nu):
     # the target: p, q, u to 1e-9 relative to max(1, |p|) at every x, x = c itself and 1 - x = 1e-5 included.
-    # Level 2 against level 4 (measured worst 2.1e-9, q at x = c for nu = -.5, c = .97, where alpha = 0.38 and the
-    # singular family at c is nearly a constant; 5.4e-10 elsewhere)
+    # Level 2 against level 4: measured worst 3.7e-10 (q at x = c, nu = -.5, c = .9; p, q at c are taken from the
+    # stick side, ``SingularField._pressure_at_c``: from the slip side they were up to 2.1e-9 off); rounding moves
+    # these values by ~1e-10 (``test_stresses_at_c_are_not_at_the_mercy_of_rounding``), so the target is the bound
     x = np.array([0.0, 0.5 * c, c * (1 - 1e-9), c, c + 1e-9, 0.5 * (1 + c), 1 - 1e-5])
     default, fine = flat_punch(nu=nu, c=c), flat_punch(nu=nu, c=c, level=4)
     scale = np.maximum(1.0, np.abs(fine.pressure(x)))
     for f in ("pressure", "shear", "slip"):
         error = np.abs(getattr(default, f)(x) - getattr(fine, f)(x)) / scale
-        assert np.all(error <= 1e-8), (f, error)
+        assert np.all(error <= 1e-9), (f, error)
 
 
 @pytest.mark.parametrize("c, nu", [(0.5, 0.25), (0.95, -0.5)])
@@ -112,23 +113,25 @@ def _near_c_max(nu: float, factor: float, x_of_c):
 def test_stresses_at_c_converge_next_to_the_largest_stick_radius(nu, factor):
     # 1 - c = factor (1 - c_max): mu gamma = 6 ... 1500, beta = 1 - 2 alpha = 0.1 ... 0.0005, and p, q near c are
     # A + B h_beta(s), nearly A + B log s: at x = c and the nearest doubles (s ~ 1e-5) the value rests on B. A
-    # convergence study in the degree of one layout: degrees 12 (the default level) and 18 against 24, at x = c, the
-    # doubles next to it and within 1e-9 (1 - c) of it on both sides, p relative to max(1, |p|) and q to max(1, |q|).
-    # Measured: at most 2e-9 (degree 12, nu = 0.3, factor 1.3) and 5e-10 (degree 18); the bound 3e-9 leaves room for
-    # rounding, which moves these values by ~1e-10 (``test_stresses_at_c_are_not_at_the_mercy_of_rounding``). With the
-    # stick pressure's singular family free (the basis before) the same study gave up to 8e-8 at every degree.
+    # convergence study in the degree of one layout: degrees 13 (the default level's singular degree) and 18 against
+    # 24, at x = c, the doubles next to it and within 1e-9 (1 - c) of it on both sides, p relative to max(1, |p|) and
+    # q to max(1, |q|). Measured: at most 4.9e-10 (degree 13, q at nu = 0, factor 1.001) and 6.5e-11 (degree 18); the
+    # target 1e-9 is the bound, rounding moves these values by ~1e-10 (``test_stresses_at_c_are_not_at_the_mercy_of_
+    # rounding``). At x = c, where the layer of s^beta is resolved, p comes from the stick side (``SingularField.
+    # _pressure_at_c``): from the slip side degree 12 was 2e-9 off at nu = 0.3, factor 1.3. With the stick pressure's
+    # singular family free (the basis before) the same study gave up to 8e-8 at every degree.
     from numeric.core.charts import Resolution
     from numeric.core.eigenvalue import solve_given_c
     from numeric.core.fields import SingularField
 
     c, gap, g, theta, x = _near_c_max(nu, factor, lambda c, gap: np.array(
         [c * (1.0 - 1e-9), np.nextafter(c, 0.0), c, np.nextafter(c, 2.0), c + 1e-9 * gap]))
-    fields = {k: SingularField(solve_given_c(c, gap, g, theta, Resolution(k, 3))) for k in (12, 18, 24)}
+    fields = {k: SingularField(solve_given_c(c, gap, g, theta, Resolution(k, 3))) for k in (13, 18, 24)}
     p = {k: f.pressure(x) for k, f in fields.items()}
     q = {k: f.shear(x) for k, f in fields.items()}
-    for k in (12, 18):
-        assert np.all(np.abs(p[k] - p[24]) <= 3e-9 * np.maximum(1.0, np.abs(p[24]))), (k, p[k], p[24])
-        assert np.all(np.abs(q[k] - q[24]) <= 3e-9 * np.maximum(1.0, np.abs(q[24]))), (k, q[k], q[24])
+    for k in (13, 18):
+        assert np.all(np.abs(p[k] - p[24]) <= 1e-9 * np.maximum(1.0, np.abs(p[24]))), (k, p[k], p[24])
+        assert np.all(np.abs(q[k] - q[24]) <= 1e-9 * np.maximum(1.0, np.abs(q[24]))), (k, q[k], q[24])
 
 
 def test_stresses_at_c_are_not_at_the_mercy_of_rounding():

@@ -2,7 +2,8 @@
 
 p and q are evaluated from the basis, so their singular behaviour at x = c and x = 1 is
 exact: there is no interpolation between nodes and no loss at x = c itself or at 1 - x = 1e-5.
-The slip u of (2.10) is (2/(pi x)) times the lower Abel integral of u* over (c, x); u* is
+At x = c itself, where the layer of s^beta at c is resolved, p is taken from the stick side (its value there is
+the regular part alone; on the slip side two terms of ~1/beta cancel) and q = mu p. The slip u of (2.10) is (2/(pi x)) times the lower Abel integral of u* over (c, x); u* is
 known at the slip collocation points from (2.2b) and interpolated in the slip elements'
 basis, which carries the behaviour of u* at both ends (one Abel order smoother than p).
 
@@ -151,6 +152,21 @@ class SingularField:
             return s
         return np.where(at_c, s_near, s)
 
+    @cached_property
+    def _pressure_at_c(self) -> float | None:
+        """p(c) from the stick side, where the slip side's layer at c is resolved (``_off_the_layer`` keeps the value
+        at c), else None.
+
+        There p is continuous at c (A(s) + s^beta B(s) on either side, beta > 0) and its value is the stick pressure's
+        regular part at s = 0, while on the slip side it is a_R + h_beta(0) b_R with h_beta(0) = -1/beta: two terms
+        of ~1/beta that cancel, their rounding amplified by 1/beta. Measured against level 4 at 1 - c = 1.001 ... 100
+        (1 - c_max), nu in {-0.9, -1/2, 0, 0.3}: level 2's p and q at c were off by up to 1.2e-9 from the slip side
+        (nu = 0.3, 1 - c = 1.2 (1 - c_max)), 3.0e-10 from the stick side where the layer is resolved."""
+        e = self.layout.stick_end + 1  # the slip end
+        if self._off_the_layer(e, np.zeros(1))[0] != 0.0:
+            return None
+        return float(self._evaluate(np.array([self.c]), STICK, self._P)[0])
+
     def pressure(self, x: np.ndarray) -> np.ndarray:
         """p(x), 0 <= x < 1 (infinite at x = 1 for 0 <= mu < inf)."""
         x = np.asarray(x, dtype=float)
@@ -158,6 +174,9 @@ class SingularField:
         out = np.empty(x.shape)
         out[stick] = self._evaluate(x[stick], STICK, self._P)
         out[~stick] = normal_factor(self.theta) * self._evaluate(x[~stick], SLIP, self._R)
+        at_c = x == self.c
+        if at_c.any() and self._pressure_at_c is not None:
+            out[at_c] = self._pressure_at_c
         return out
 
     def shear(self, x: np.ndarray) -> np.ndarray:
@@ -170,6 +189,9 @@ class SingularField:
         # q = mu p (2.6b) as the product, so that it holds to the last bit; R/gamma at mu = inf
         out[~stick] = (self.mu * (normal_factor(self.theta) * slip) if self.theta < 0.5 * math.pi
                        else slip / self.gamma)
+        at_c = x == self.c
+        if at_c.any() and self._pressure_at_c is not None:  # q(c) = mu p(c), p(c) from the stick side
+            out[at_c] = self.mu * self._pressure_at_c
         return out
 
     @cached_property

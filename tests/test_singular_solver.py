@@ -158,3 +158,38 @@ def test_stresses_at_c_are_not_at_the_mercy_of_rounding():
         z = EquilibratedLU(D * (1.0 + 1e-16 * rng.standard_normal(D.shape))).solve(sol.system.rhs)
         moved = SingularField(dataclasses.replace(sol, coefficients=z)).pressure(x)
         assert np.all(np.abs(moved - p) <= 1e-9 * np.maximum(1.0, np.abs(p))), (moved - p)
+
+
+@pytest.mark.parametrize("nu, factor", [(0.3, 1.01), (-0.5, 1.001), (0.0, 3.0)])
+def test_given_theta_carries_the_solution_along_newtons_tangent_within_rounding(nu, factor):
+    # Given mu, the last given-c solve's z is carried from Newton's theta to theta = atan(mu gamma) itself along
+    # dz/dtheta (``numeric.core.eigenvalue.TANGENT_REACH``) instead of a new solve there. The guided solves start Newton
+    # at that theta, so its LU is there and the carried z is that LU's solution, up to the rounding of adding and
+    # removing Newton's last step: against a new solve at theta, P*, p and q (relative to max(1, |p|), max(1, |q|))
+    # agree exactly here (measured 0); bound 1e-11, where leaving z at Newton's theta is 6e-11 ... 2e-10 off and the
+    # tangent with the wrong sign 1.3e-10 ... 4.3e-10 (two new solves one unit in the last place of theta apart
+    # scatter by 1.2e-10 next to c_max).
+    import dataclasses
+
+    from numeric.core.charts import RESOLUTIONS
+    from numeric.core.eigenvalue import solve_given_c, solve_given_theta_guided
+    from numeric.core.fields import SingularField
+    from numeric.core.linear_algebra import EquilibratedLU
+
+    res = RESOLUTIONS[2]
+    c, gap, g, theta, x = _near_c_max(nu, factor, lambda c, gap: np.array(
+        [0.0, 0.5 * c, c, np.nextafter(c, 2.0), c + 0.5 * gap, 1.0 - 1e-5 * gap]))
+    target = math.atan(math.tan(theta) * (1.0 + 1e-7))  # a friction the given-c solve at c did not give
+    step = 1e-6
+    other = solve_given_c(1.0 / (1.0 + math.exp(-(math.log(c / gap) + step))),
+                          1.0 / (1.0 + math.exp(math.log(c / gap) + step)), g, theta, res)
+    slope = (other.theta - solve_given_c(c, gap, g, theta, res).theta) / step
+    carried = solve_given_theta_guided(target, g, c, gap, slope, res).solution
+    assert carried.theta == target and carried.tangent is not None
+    system = carried.system
+    fresh = dataclasses.replace(carried, coefficients=EquilibratedLU(system.matrix(target)).solve(system.rhs))
+    a, b = SingularField(carried), SingularField(fresh)
+    assert a.compliance == pytest.approx(b.compliance, rel=1e-11)
+    for f in ("pressure", "shear"):
+        va, vb = getattr(a, f)(x), getattr(b, f)(x)
+        assert np.all(np.abs(va - vb) <= 1e-11 * np.maximum(1.0, np.abs(vb))), (f, va - vb)

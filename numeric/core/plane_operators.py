@@ -255,14 +255,15 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     at c for mu = inf).
 
     Nor has the admissible local solution (c - x)^(1/2 - alpha), or any with cot(pi lam) = mu gamma, p on the stick
-    side: from alpha = 1/4 on (``numeric.core.stick_pressure_pins.pins_stick_pressure``; ``pinned`` overrides, so that the two
+    side: from alpha = 0.04 on (``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``; ``pinned`` overrides, so that the two
     assemblies of a difference quotient in alpha agree) p's coefficients of h_beta on the stick end are pinned to 0 in
     (N) rows at the stick end's points ``numeric.core.stick_pressure_pins.pinned_rows``, as in the axisymmetric system. Left free,
     they made a near-null vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
     system's least singular value rose from 2.2e-11 to 7.9e-9 with the pins, mu moved from 2e-12 to 1e-13 of the
     degree-24 solution and p at x = c from 7e-9 to 8e-12 (nu = -1/2, c = 0.93: 3e-10 to 3e-13 in mu, 9e-7 to 1e-11 in
-    p). Below alpha = 1/4 they stay free: pinned there, mu between degrees 18 and 24 differed 50 times more at
-    nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5)."""
+    p). Below alpha = 0.04 they stay free: pinned there, mu between degrees 18 and 24 differed 50 times more at
+    nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5); between 0.04 and 1/4 (free until this was measured) pinned p at
+    x = c came from up to 2.9e-9 to 3.1e-10 of degree 28."""
     lay, pts = ops.layout, ops.points
     T = ops.transforms(alpha)
     stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
@@ -297,7 +298,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     mode_stick[N:-1] = odd_s[stick_pts]
     rhs = np.zeros(n)
     rhs[-1] = 1.0
-    pin = pins_stick_pressure(alpha) if pinned is None else pinned
+    pin = pins_stick_pressure(alpha, plane=True) if pinned is None else pinned
     if pin:
         e = lay.stick_end
         slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns

@@ -1,4 +1,4 @@
-"""Where the stick pressure's singular family at x = c is pinned to 0, and in which rows: one rule for the
+"""Where the stick pressure's singular family at x = c is pinned to 0, and in which rows: the rule of the
 axisymmetric (``numeric.core.operators``) and the plane (``numeric.core.plane_operators``) collocation systems.
 
 The local solutions at the stick-slip point carry no pressure on the stick side (``asymptotics.derive.plane``), so
@@ -11,15 +11,27 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["pins_stick_pressure", "pinned_rows"]
+__all__ = ["pins_stick_pressure", "pinned_rows", "AXISYMMETRIC_PIN_FROM", "PLANE_PIN_FROM"]
+
+#: The axisymmetric system pins from alpha = 1/4 on (mu gamma >= 1, beta = 1 - 2 alpha <= 1/2), where the family tends
+#: to log s and, left free, made a near-null vector (``numeric.core.charts``). Below, h_beta(0) = 0 and the free family
+#: does no harm; pinned from alpha = 0.04 on, mu scattered over degrees 12 ... 20 by up to 1.1e-12 against 3.2e-13
+#: (nu = -0.9, c = 0.01; 12 (nu, c) with alpha in [0.04, 1/4)), while p and q moved by < 2e-10.
+AXISYMMETRIC_PIN_FROM = 0.25
+
+#: The plane system pins from alpha = 0.04 on (1/2 - alpha <= 0.46 there): between 0.04 and 1/4 the free family left
+#: p and q at and next to x = c up to 2.9e-9 off degree 28 (nu = 0, c = 0.97; 1.7e-9 at nu = 0.3, c = 0.999),
+#: pinned 3.1e-10 (13 (nu, c) with alpha in [0.04, 1/4)), and mu's spread over degrees 16 ... 24 fell from up to
+#: 2.8e-11 to below 1e-12. Below 0.04 (nu >= 0.4 at these c) pinning did not help: both ways scatter by 1e-9 ... 7e-8
+#: at x = c, the system's conditioning growing like 1/gamma; pinned there, mu between degrees 18 and 24 differed 50
+#: times more at nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5).
+PLANE_PIN_FROM = 0.04
 
 
-def pins_stick_pressure(alpha: float) -> bool:
-    """Whether the stick pressure's singular family at c is pinned to 0 at basis exponent alpha: from alpha = 1/4 on
-    (mu gamma >= 1; beta = 1 - 2 alpha <= 1/2 here, 1/2 - alpha <= 1/4 in the plane solver), where the family tends to
-    log s and, left free, made a near-null vector of the system (``numeric.core.charts``). The same rule in both
-    geometries."""
-    return alpha >= 0.25
+def pins_stick_pressure(alpha: float, plane: bool = False) -> bool:
+    """Whether the stick pressure's singular family at c is pinned to 0 at basis exponent alpha: from
+    ``AXISYMMETRIC_PIN_FROM`` on in the axisymmetric system, from ``PLANE_PIN_FROM`` on in the plane one (``plane``)."""
+    return alpha >= (PLANE_PIN_FROM if plane else AXISYMMETRIC_PIN_FROM)
 
 
 def pinned_rows(n: int, k: int) -> np.ndarray:

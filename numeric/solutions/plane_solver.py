@@ -96,9 +96,10 @@ GUESS_SPREAD = max(1e-9, *(GUESS_ERRORS or {"": 1e-3}).values())
 #: times better conditioned and brings mu within 6e-12. Below 1 - c = 1e-3 conditioning grows for every layout (1e13
 #: ... 1e16 at 1 - c = 1e-4 ... 1e-9), and below c = 1e-2 too (1e12 ... 1e14 at c = 3e-3 ... 1e-3, the round-off
 #: that grows like 1/c): there it is not a signal. The poles at nu = -1/2, c = 0.91 ... 0.935 (alpha = 0.41 ... 0.48)
-#: were the stick pressure's free singular family: pinned from alpha = 1/4 on (``numeric.core.plane_operators``) the
-#: default layout is within 1e-15 of the reference there. Below alpha = 1/4 the family stays free and such poles remain
-#: (nu = -0.008, c = 0.17); over 19 x 23 (nu, c) in [-0.6, 0.3] x [0.05, 0.6] the route takes the alternate at 3.
+#: were the stick pressure's free singular family: pinned from alpha = 0.04 on (``numeric.core.plane_operators``) the
+#: default layout is within 1e-15 of the reference there. Below the family stays free and such poles remain; over
+#: 19 x 23 (nu, c) in [-0.6, 0.3] x [0.05, 0.6] the route takes the alternate at 1 (nu = 0, c = 0.05; at 3 while the
+#: family was free up to alpha = 1/4, nu = -0.008, c = 0.17 among them).
 CONDITION_LIMIT = 1e12
 CONDITION_CHECK_GAP = 1e-3
 CONDITION_CHECK_C = 1e-2

@@ -3,7 +3,9 @@
 p and q are evaluated from the basis, so their singular behaviour at x = c and x = 1 is
 exact: there is no interpolation between nodes and no loss at x = c itself or at 1 - x = 1e-5.
 At x = c itself, where the layer of s^beta at c is resolved, p is taken from the stick side (its value there is
-the regular part alone; on the slip side two terms of ~1/beta cancel) and q = mu p. The slip u of (2.10) is (2/(pi x)) times the lower Abel integral of u* over (c, x); u* is
+the regular part alone; on the slip side two terms of ~1/beta cancel) and q = mu p.
+
+The slip u of (2.10) is (2/(pi x)) times the lower Abel integral of u* over (c, x); u* is
 known at the slip collocation points from (2.2b) and interpolated in the slip elements'
 basis, which carries the behaviour of u* at both ends (one Abel order smoother than p).
 

@@ -13,8 +13,8 @@ analysis of the half-plane relations (``asymptotics.derive.plane``) gives
 - at x = 1: p = (1 - x)^(alpha - 1/2) E(x), E analytic (the edge of the slip zone, q = mu p).
 
 So the elements touching c ("stick end", "slip end") carry Legendre polynomials plus h_beta(s) times
-polynomials of degree ``singular_degree`` (p's on the stick end pinned to 0 from alpha = 0.04 on, ``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``: the local solutions
-have no pressure on the stick side, ``numeric.core.plane_operators.plane_collocation_system``) (h_beta = (s^beta - 1)/beta, ``numeric.core.charts.h_beta``:
+polynomials of degree ``singular_degree`` (p's on the stick end pinned to 0 from alpha = 0.04 on,
+``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``: the local solutions have no pressure on the stick side, ``numeric.core.plane_operators.plane_collocation_system``) (h_beta = (s^beta - 1)/beta, ``numeric.core.charts.h_beta``:
 the same span as s^beta but well conditioned as beta -> 0, mu -> inf, where it is log s); the element
 touching 1 ("edge") carries s^(alpha - 1/2) times polynomials; every other element ("plain") is a
 polynomial. The chart of an element is linear, t = a + sigma L s, s in [0, 1], with s = 0 at the

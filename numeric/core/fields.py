@@ -39,6 +39,11 @@ def point_offsets(lay: Layout, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return anchor, offset
 
 
+#: ``SingularField`` keeps the basis at the last point set of each zone only up to this many points (a plot's or a
+#: quadrature's many points would hold n_basis values each).
+KEPT_POINTS = 1024
+
+
 @lru_cache(maxsize=None)
 def _collocation_legendre(kind: int, n: int, degree: int) -> np.ndarray:
     """Shifted Legendre values at the n collocation points of an element of this kind, (n, degree + 1)."""
@@ -102,9 +107,9 @@ class SingularField:
         """Per element of ``zone`` holding some of the points x: their rows, the element's unknowns (first, last)
         and its basis there. The last point set of each zone is kept: p and q at the same points (``pressure``,
         ``shear``) tabulate the basis once."""
-        key = x.tobytes()
+        key = x.tobytes() if x.size <= KEPT_POINTS else None
         kept = self._kept.get(zone)
-        if kept is not None and kept[0] == key:
+        if key is not None and kept is not None and kept[0] == key:
             return kept[1]
         lay = self.layout
         parts = []
@@ -125,7 +130,8 @@ class SingularField:
                 if lay.kind[e] == SLIP_END or lay.kind[e] == STICK_END:
                     s = self._off_the_layer(e, s)
                 parts.append((rows, int(lay.starts[e]), int(lay.starts[e + 1]), basis_values(lay, e, s, self.alpha)))
-        self._kept[zone] = (key, parts)
+        if key is not None:
+            self._kept[zone] = (key, parts)
         return parts
 
     def _off_the_layer(self, e: int, s: np.ndarray) -> np.ndarray:

@@ -133,7 +133,7 @@ class AbelOperators:
 
     ``matrices(alpha)`` gives them as an ``AbelMatrices``. Points default to the collocation points (whose rules
     on their own element are cached); ``names`` ("upper", "lower") and ``elements`` restrict what is formed, and
-    ``divided=False`` leaves out the integrals of phi/sqrt(u) (``AbelMatrices.upper_x`` ...: 0).
+    ``divided=False`` leaves out the integrals of phi/sqrt(u) (``AbelMatrices.upper_x`` ... empty).
     What does not depend on alpha (every plain element, the regular family of the elements touching c^2) is
     formed here, once per layout and point set; the families that carry alpha are kept as quadrature terms
     (weights, nodes, Legendre values) and contracted per alpha.
@@ -366,10 +366,10 @@ def _node_sets(lay: Layout, terms: dict[int, dict[str, list[_Term]]]) -> dict[in
         chunks, where = out.setdefault(_family(int(lay.kind[e])), ([], {}))
         for t in (t for ts in blocks.values() for t in ts):
             if id(t.S) not in where:
-                size = sum(c.size for c in chunks)
-                where[id(t.S)] = slice(size, size + t.S.size)
-                chunks.append(t.S.ravel())
-    return {family: (np.concatenate(chunks), where) for family, (chunks, where) in out.items()}
+                start = where[id(chunks[-1])].stop if chunks else 0
+                where[id(t.S)] = slice(start, start + t.S.size)
+                chunks.append(t.S)
+    return {family: (np.concatenate([c.ravel() for c in chunks]), where) for family, (chunks, where) in out.items()}
 
 
 @dataclass(frozen=True, slots=True, eq=False)

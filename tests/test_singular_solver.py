@@ -193,3 +193,15 @@ def test_given_theta_carries_the_solution_along_newtons_tangent_within_rounding(
     for f in ("pressure", "shear"):
         va, vb = getattr(a, f)(x), getattr(b, f)(x)
         assert np.all(np.abs(va - vb) <= 1e-11 * np.maximum(1.0, np.abs(vb))), (f, va - vb)
+
+
+@pytest.mark.parametrize("nu, gap", [(0.3, 2.43e-4), (0.45, 1.8974e-3), (0.3, 1.8974e-3)])
+def test_the_centre_pressure_converges_where_the_element_at_x0_is_halved(nu, gap):
+    # p(0) is the value of the element touching x = 0 at an end no neighbour shares. Where that element is longer than
+    # CENTRE_RATIO of its distance to u = 1 it is halved (``numeric.core.charts.layout``): at these (nu, c) (c near 1,
+    # the element as long as its distance to c^2) level 2 was 1.6e-9, 2.4e-9, 2.2e-9 off level 4 unhalved, measured
+    # 1.4e-12, 1.1e-12, 1.2e-12 halved (24 more unknowns). Bound 1e-9, the stress target
+    c = 1.0 - gap
+    x = np.array([0.0])
+    default, fine = flat_punch(nu=nu, c=c), flat_punch(nu=nu, c=c, level=4)
+    assert abs(default.pressure(x)[0] - fine.pressure(x)[0]) <= 1e-9 * max(1.0, abs(fine.pressure(x)[0]))

@@ -286,21 +286,33 @@ class _Slice:
 
     def value(self, key: str, x: np.ndarray, derivative: bool = False) -> np.ndarray:
         """The stored function ``key`` at x (or its derivative in u), each point in its own piece."""
+        return self.values(key, x, (derivative,))[0]
+
+    def values(self, key: str, x: np.ndarray, derivatives: tuple[bool, ...]) -> list[np.ndarray]:
+        """``value`` for each of ``derivatives`` at once: the pieces located and the Chebyshev polynomials formed
+        once (Newton on log mu in ``table_given_mu`` reads the value and its slope at every step)."""
         edges = np.asarray(self.region.pieces)
         j = np.minimum(np.maximum(np.searchsorted(edges, x, side="right") - 1, 0), edges.size - 2)
         lo, hi = edges[j], edges[j + 1]
         t = (2.0 * x - lo - hi) / (hi - lo)
-        b = self.series(key, derivative)[j, np.arange(x.size)]  # each point's own piece
-        out = np.einsum("pk,pk->p", b, chebyshev_matrix(t, b.shape[1]))
-        if derivative:  # d/du = d/dt dt/dx dx/du
-            out *= (2.0 / (hi - lo)) * (2.0 / (self.ends[1] - self.ends[0]))
+        own = np.arange(x.size)
+        series = [self.series(key, derivative)[j, own] for derivative in derivatives]  # each point's own piece
+        T = chebyshev_matrix(t, max(b.shape[1] for b in series))
+        out = []
+        for b, derivative in zip(series, derivatives):
+            value = np.einsum("pk,pk->p", b, T[:, : b.shape[1]])
+            if derivative:  # d/du = d/dt dt/dx dx/du
+                value *= (2.0 / (hi - lo)) * (2.0 / (self.ends[1] - self.ends[0]))
+            out.append(value)
         return out
 
     def log_mu(self, x: np.ndarray, slope: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
         """log mu at x and (if asked) d log mu/du."""
         u = self.u_of(x)
-        stored = self.value("eigen", x)
-        stored_slope = self.value("eigen", x, derivative=True) if slope else np.zeros_like(x)
+        if slope:
+            stored, stored_slope = self.values("eigen", x, (False, True))
+        else:
+            stored, stored_slope = self.value("eigen", x), np.zeros_like(x)
         value, derivative = _log_mu(self.region, u, self.gamma, stored, stored_slope)
         return value, (derivative if slope else None)
 

@@ -173,7 +173,7 @@ class SingularField:
         e = self.layout.stick_end + 1  # the slip end
         if self._off_the_layer(e, np.zeros(1))[0] != 0.0:
             return None
-        return float(self._evaluate(np.array([self.c]), STICK, self._P)[0])
+        return float(self.solution.system.end_row @ self._P)  # P(c-), the eigenvalue condition's own
 
     def pressure(self, x: np.ndarray) -> np.ndarray:
         """p(x), 0 <= x < 1 (infinite at x = 1 for 0 <= mu < inf)."""

@@ -16,7 +16,8 @@ __all__ = ["pins_stick_pressure", "pinned_rows", "AXISYMMETRIC_PIN_FROM", "PLANE
 #: The axisymmetric system pins from alpha = 1/4 on (mu gamma >= 1, beta = 1 - 2 alpha <= 1/2), where the family tends
 #: to log s and, left free, made a near-null vector (``numeric.core.charts``). Below, h_beta(0) = 0 and the free family
 #: does no harm; pinned from alpha = 0.04 on, mu scattered over degrees 12 ... 20 by up to 1.1e-12 against 3.2e-13
-#: (nu = -0.9, c = 0.01; 12 (nu, c) with alpha in [0.04, 1/4)), while p and q moved by < 2e-10.
+#: (nu = -0.9, c = 0.01; 12 (nu, c) with alpha in [0.04, 1/4)), for p and q within 6.8e-10 of level 4 against 8.6e-10
+#: (27 (nu, c) with alpha in [0.02, 0.26)): both within the stress target, so the rule stays.
 AXISYMMETRIC_PIN_FROM = 0.25
 
 #: The plane system pins from alpha = 0.04 on (1/2 - alpha <= 0.46 there): between 0.04 and 1/4 the free family left

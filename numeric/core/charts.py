@@ -106,8 +106,8 @@ class Resolution:
 #: error at all 80 for levels 1 and 2. With every element at degree 12 (274 unknowns) level 2 was worst 1.3e-11 but
 #: at nu = 0.3, 1 - c = 1.1 (1 - c_max) 1.2 times above its estimate: the degree-11 partner was the more accurate (even
 #: plain degrees converge worse there; plain 12 under singular 13 fell 1.03 times short at the same point). The
-#: singular elements at 13 rather than 12 (4 more unknowns) bring p and q at x = c next to c_max from 1.8e-9 to 1.1e-9
-#: of level 4. Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times its partner difference,
+#: singular elements at 13 rather than 12 (4 more unknowns) brought p and q at x = c next to c_max from 1.8e-9 to 1.1e-9
+#: of level 4 (3e-10 since p(c) is read from the stick side, ``numeric.core.fields``). Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times its partner difference,
 #: ``numeric.solutions.solver.ESTIMATE_SAFETY``); lower plain degrees were worse.
 RESOLUTIONS: tuple[Resolution, ...] = (
     Resolution(degree=7, singular_degree=2),

@@ -8,7 +8,7 @@ the value (the rounding level of the eigenvalue condition), a floor that grows l
 level's c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against
 level 4 and the graded solver (``derivations/stability.md``, ``tests/test_singular_solver.py``) the true error of
 the default level lies below this estimate everywhere checked; the default level is at the rounding floor at most
-points, and where it is not and level 4 resolves it the estimate is within a factor 10 at 18 of 21 points (up to
+points, and where it is not and level 4 resolves it the estimate is within a factor 10 at 7 of 8 points (the eighth
 700x pessimistic next to c_max at nu = 0.3, where the partner's plain degree 10 converges poorly). The estimate is
 a second solve as costly as the first, so it is formed when first read
 (``numeric.solutions.solution.DeferredError``), or at once where rtol asks for it.

@@ -22,7 +22,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
-from numeric.core.charts import (AT_C2, AT_ONE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, basis_values,
+from numeric.core.charts import (AT_C2, AT_ONE, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, basis_values,
                                  chart_of_offset, collocation_chart, shifted_legendre)
 from numeric.core.eigenvalue import Eigensolution
 from numeric.core.operators import AbelOperators, normal_factor
@@ -38,6 +38,10 @@ def point_offsets(lay: Layout, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     offset = np.where(to_one, -(1.0 - x) * (1.0 + x), (x - lay.c) * (x + lay.c))
     return anchor, offset
 
+
+#: ``SingularField.slip`` leaves out the slip elements that start more than this above the largest point in u = x^2
+#: (their integrals over t < x are 0; the margin keeps any element that rounding of u could put on the other side).
+SLIP_MARGIN = 1e-12
 
 #: ``SingularField`` keeps the basis at the last point set of each zone only up to this many points (a plot's or a
 #: quadrature's many points would hold n_basis values each).
@@ -233,8 +237,13 @@ class SingularField:
             return out
         lay = self.layout
         xs = x[outer]
-        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",), elements=np.flatnonzero(lay.zone == SLIP),
-                            divided=False)
+        anchor, offset = point_offsets(lay, xs)
+        # the integral runs over c < t < x: the slip elements starting above the largest point (by more than
+        # SLIP_MARGIN, far beyond the rounding of u) give 0 and are left out
+        start = np.where(lay.anchor == AT_C2, lay.c2, 1.0) + np.where(lay.kind == EDGE, -lay.hi, lay.lo)
+        top = np.max(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)
+        ops = AbelOperators(lay, (anchor, offset), names=("lower",),
+                            elements=np.flatnonzero((lay.zone == SLIP) & (start < top + SLIP_MARGIN)), divided=False)
         total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self._u_star_coefficients
         out[outer] = (2.0 / math.pi) * total / xs
         return out

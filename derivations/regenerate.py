@@ -13,7 +13,9 @@ The work is ``numeric.studies.documents.regenerate``; this script runs it on thi
 
 ``--fast`` leaves the solver-computed blocks of the documents and the figures as committed
 (a test runs ``--fast --check``; the full check is a slow test). The output is
-deterministic (no timestamps), so a re-run leaves ``git diff`` empty.
+deterministic (no timestamps), so a re-run leaves ``git diff`` empty. The full run pins the BLAS to
+one thread, as the committed files were made (a threaded BLAS moves the tenth digits of the
+solver's figures); where the environment does not, it runs in a child process that does.
 """
 
 from __future__ import annotations

@@ -20,7 +20,9 @@ import io
 import itertools
 import json
 import math
+import os
 import re
+import subprocess
 import sys
 import warnings
 from pathlib import Path
@@ -423,12 +425,24 @@ def _run_stability(args) -> int:
     return 0
 
 
+#: The environment variables that pin the BLAS to one thread (OpenBLAS, the numpy and scipy wheels' BLAS; MKL; OpenMP).
+BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")
+
+
 def _run_derivations(args) -> int:
     from numeric.studies.documents import regenerate
 
     directory = _checkout_path(args.directory, "derivations")
     if directory is None:
         return 2
+    if not args.fast and os.environ.get("OPENBLAS_NUM_THREADS") != "1":
+        # the solver's figures are written to 10 digits and their last ones follow the BLAS's summation order: a
+        # threaded OpenBLAS moved plane_strain.md's mu(nu = 0.3, c = 0.05) by 2e-11 and the slip figure's u by 5e-10
+        # of tiny values. The committed files are one thread's; a process whose BLAS is already loaded cannot be
+        # changed, so the run goes to a child process with the BLAS pinned (numpy's SIMD paths left these files alone)
+        command = [sys.executable, "-m", "numeric.app.cli", "derivations", "--directory", str(directory)]
+        env = dict(os.environ, **{name: "1" for name in BLAS_THREAD_VARIABLES})
+        return subprocess.run(command + ["--check"] * args.check, env=env, check=False).returncode
     stale = regenerate(directory, fast=args.fast, check=args.check, report=lambda m: sys.stdout.write(m + "\n"))
     if stale:
         sys.stderr.write("out of date (run python derivations/regenerate.py): " + ", ".join(stale) + "\n")

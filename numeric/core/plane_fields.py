@@ -152,11 +152,15 @@ class PlaneField:
         # near, toward x as far as x is near 1
         length = ax[outer] - self.c
         at_c = pieces_toward(2.0 * self.c / length)
-        at_x = pieces_toward((1.0 - ax[outer]) / length)
-        for kc, kx in set(zip(at_c.tolist(), at_x.tolist())):
-            group = outer[(at_c == kc) & (at_x == kx)]
+        to_edge = (1.0 - ax[outer]) / length
+        at_x = pieces_toward(to_edge)
+        # the strain is singular at c itself, but at x only through the edge: where that is at least the innermost
+        # piece's length beyond x, the piece is plain Gauss (12 nodes, not 40)
+        regular = to_edge >= 0.5 ** (at_x + 1.0)
+        for kc, kx, smooth in set(zip(at_c.tolist(), at_x.tolist(), regular.tolist())):
+            group = outer[(at_c == kc) & (at_x == kx) & (regular == smooth)]
             lo = np.full(group.size, self.c)
-            out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(kc, kx))
+            out[group] = self._strain_integral(lo, ax[group], ax[group] - 1.0, graded_toward(kc, kx, smooth))
         return (np.sign(x).ravel() * out).reshape(x.shape)
 
     def tail_strain_integrals(self, lo: np.ndarray, weight: Weight) -> np.ndarray:
@@ -210,24 +214,29 @@ def graded_both_ends() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return graded_toward(SLIP_PIECES, SLIP_PIECES)
 
 
-def _half(pieces: int) -> tuple[np.ndarray, np.ndarray]:
+def _half(pieces: int, regular: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """Nodes s in [0, 1/2] and weights: ``pieces`` pieces [lo, 2 lo], lo = 2^-2 ... 2^-(pieces + 1), and the innermost
-    [0, 2^-(pieces + 1)] in v, s = h v^INNER_POWER (``INNER_NODES``)."""
+    [0, 2^-(pieces + 1)] in v, s = h v^INNER_POWER (``INNER_NODES``), or, where the integrand is ``regular`` at s = 0
+    (its singularity at least the innermost piece's length beyond it), in s with SLIP_NODES like the other pieces."""
     x, w = gauss_legendre(SLIP_NODES)
     lo = 0.5 ** np.arange(2, pieces + 2, dtype=float)  # pieces [lo, 2 lo] within [0, 1/2]
     s_half = ((1.5 * lo)[:, None] + (0.5 * lo)[:, None] * x[None, :]).ravel()
     w_half = ((0.5 * lo)[:, None] * w[None, :]).ravel()
     h = 0.5 ** (pieces + 1)
+    if regular:
+        return np.concatenate([0.5 * h * (x + 1.0), s_half]), np.concatenate([0.5 * h * w, w_half])
     v, wv = christoffel_gauss01(INNER_NODES)
     m = INNER_POWER
     return np.concatenate([h * v**m, s_half]), np.concatenate([m * h * v ** (m - 1) * wv, w_half])
 
 
 @lru_cache(maxsize=None)
-def graded_toward(at_zero: int, at_one: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """As ``graded_both_ends`` with ``at_zero`` pieces toward 0 and ``at_one`` toward 1 (read-only arrays)."""
+def graded_toward(at_zero: int, at_one: int, regular_one: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """As ``graded_both_ends`` with ``at_zero`` pieces toward 0 and ``at_one`` toward 1 (read-only arrays);
+    ``regular_one``: the integrand is regular at s = 1, its singularity at least 2^-(at_one + 1) beyond it
+    (``pieces_toward`` unclipped), and the innermost piece there is plain Gauss (``_half``)."""
     s0, w0 = _half(at_zero)
-    s1, w1 = _half(at_one)
+    s1, w1 = _half(at_one, regular_one)
     s = np.concatenate([s0, 1.0 - s1[::-1]])
     one_minus = np.concatenate([1.0 - s0, s1[::-1]])
     wt = np.concatenate([w0, w1[::-1]])

@@ -382,6 +382,8 @@ def table_given_c(c: np.ndarray, gamma: np.ndarray, gap: np.ndarray | None = Non
     edge = box_gap(gamma, k)
     taken = np.zeros(c.size, dtype=bool)
     for name, region in tables.regions.items():
+        if taken.all():  # every point answered (a scalar call in S: the other regions' masks not formed)
+            break
         rows = np.flatnonzero(_gamma_in(region, gamma) & ~taken)
         if rows.size == 0:
             continue
@@ -429,6 +431,8 @@ def table_given_mu(mu: np.ndarray, gamma: np.ndarray, quantities: tuple[str, ...
         target = np.log(mu)
     candidate = (mu > 0.0) & (gamma > 0.0)
     for name, region in tables.regions.items():  # S first; N and L take what lies above mu at the box edge
+        if not candidate.any():  # every point answered or below the table
+            break
         rows = np.flatnonzero(candidate & _gamma_in(region, gamma))
         if region.coordinate == "log_gap_ratio":
             ends = rows[np.isinf(mu[rows])]

@@ -174,3 +174,37 @@ def test_a_built_wheel_carries_the_table_coefficients(tmp_path):
     (wheel,) = tmp_path.glob("hertz_friction-*.whl")
     names = zipfile.ZipFile(wheel).namelist()
     assert "numeric/core/table_data.npy" in names and "numeric/core/table_data.py" in names
+
+
+def test_threads_that_first_read_the_tables_together_load_them_once(monkeypatch):
+    # a sweep's threads (a thread pool, a Dask worker's threads) reading the tables first at the same moment: one
+    # loads them, the others wait (concurrent loads did it four times here, and numpy's .npy header parse in two
+    # threads at once raised SystemError on CPython 3.11.7, python/cpython#106905). The counting load sleeps 50 ms so
+    # that the four threads, released together by the barrier, overlap in it; without the lock this counts 4.
+    import threading
+    import time
+    from concurrent.futures import ThreadPoolExecutor
+
+    from numeric.core import table
+    loads = []
+    real = table.coefficients_of
+
+    def counting(data):
+        loads.append(threading.get_ident())
+        time.sleep(0.05)
+        return real(data)
+
+    monkeypatch.setattr(table, "coefficients_of", counting)
+    table.use_table_data(None)  # the committed tables, not yet loaded
+    barrier = threading.Barrier(4)
+
+    def read(_):
+        barrier.wait()
+        return table.table_available()
+
+    try:
+        with ThreadPoolExecutor(4) as pool:
+            assert all(pool.map(read, range(4)))
+        assert len(loads) == 1
+    finally:
+        table.use_table_data(None)

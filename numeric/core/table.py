@@ -37,6 +37,7 @@ References
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
@@ -178,7 +179,7 @@ _SOURCE: list = []  # the data module in use: numeric.core.table_data, or one gi
 def use_table_data(module) -> None:
     """Evaluate the tables of ``module`` (a freshly built table_data) instead of the committed ones (None: those)."""
     _SOURCE[:] = [] if module is None else [module]
-    _data.cache_clear()
+    _loaded.cache_clear()
 
 
 @dataclass(frozen=True)
@@ -198,8 +199,20 @@ def coefficients_of(data) -> dict[str, dict[str, list[np.ndarray]]]:
             for name, keys in data.SERIES.items()}
 
 
-@lru_cache(maxsize=1)
+#: Threads of a sweep (``numeric.solutions.sweep``, a thread pool or a Dask worker's threads) that first read the
+#: tables at the same moment load them one after the other: concurrent loads did the work twice, and numpy's reading
+#: of the .npy header (``ast.literal_eval``) in two threads at once raised "SystemError: AST constructor recursion
+#: depth mismatch" on CPython 3.11.7 (python/cpython#106905, fixed in 3.11.8) in ``tests/test_dask.py``, 2 of 8 suite runs.
+_LOADING = threading.Lock()
+
+
 def _data() -> _Tables:
+    with _LOADING:
+        return _loaded()
+
+
+@lru_cache(maxsize=1)
+def _loaded() -> _Tables:
     if _SOURCE:
         data = _SOURCE[0]
     else:

@@ -155,8 +155,10 @@ class PlaneField:
         to_edge = (1.0 - ax[outer]) / length
         at_x = pieces_toward(to_edge)
         # the strain is singular at c itself, but at x only through the edge: where that is at least the innermost
-        # piece's length beyond x, the piece is plain Gauss (12 nodes, not 40)
+        # piece's length beyond x, the piece is plain Gauss (12 nodes, not 40), and where it is half the interval
+        # away or more, one piece covers the whole half at x
         regular = to_edge >= 0.5 ** (at_x + 1.0)
+        at_x = np.where(regular & (to_edge >= 0.5), 0, at_x)
         for kc, kx, smooth in set(zip(at_c.tolist(), at_x.tolist(), regular.tolist())):
             group = outer[(at_c == kc) & (at_x == kx) & (regular == smooth)]
             lo = np.full(group.size, self.c)
@@ -234,7 +236,8 @@ def _half(pieces: int, regular: bool = False) -> tuple[np.ndarray, np.ndarray]:
 def graded_toward(at_zero: int, at_one: int, regular_one: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """As ``graded_both_ends`` with ``at_zero`` pieces toward 0 and ``at_one`` toward 1 (read-only arrays);
     ``regular_one``: the integrand is regular at s = 1, its singularity at least 2^-(at_one + 1) beyond it
-    (``pieces_toward`` unclipped), and the innermost piece there is plain Gauss (``_half``)."""
+    (``pieces_toward`` unclipped; ``at_one`` = 0 where it is 1/2 or more beyond), and the innermost piece there is
+    plain Gauss (``_half``)."""
     s0, w0 = _half(at_zero)
     s1, w1 = _half(at_one, regular_one)
     s = np.concatenate([s0, 1.0 - s1[::-1]])

@@ -1,6 +1,5 @@
 """derivations/plane_strain.md and the plane figures are what the code regenerates (``python derivations/regenerate.py``)."""
 
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -8,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from asymptotics.document import agrees
-from numeric.app.cli import BLAS_THREAD_VARIABLES
+from numeric.app.cli import one_blas_thread_environment
 from numeric.studies.documents import documents
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -32,7 +31,7 @@ _CHECK_IN_ONE_THREAD = """
 import sys
 from pathlib import Path
 from asymptotics.document import agrees
-from numeric.app.cli import BLAS_THREAD_VARIABLES
+from numeric.app.cli import one_blas_thread_environment
 from numeric.studies.documents import documents
 committed = Path(sys.argv[1]).read_text(encoding="utf-8")
 sys.exit(0 if agrees(committed, documents(object())["plane_strain.md"](committed)) else 1)
@@ -42,8 +41,8 @@ sys.exit(0 if agrees(committed, documents(object())["plane_strain.md"](committed
 @pytest.mark.slow
 def test_plane_document_and_figures_are_current(tmp_path):
     from numeric.studies.plane_figures import write_plane_figures
-    env = dict(os.environ, **{name: "1" for name in BLAS_THREAD_VARIABLES})
-    check = subprocess.run([sys.executable, "-c", _CHECK_IN_ONE_THREAD, str(DOCUMENT)], env=env, check=False)
+    check = subprocess.run([sys.executable, "-c", _CHECK_IN_ONE_THREAD, str(DOCUMENT)], env=one_blas_thread_environment(),
+                           check=False)
     assert check.returncode == 0, "run: python derivations/regenerate.py"
     for path in write_plane_figures(tmp_path):
         if path.suffix == ".csv":

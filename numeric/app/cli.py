@@ -429,6 +429,12 @@ def _run_stability(args) -> int:
 BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")
 
 
+def one_blas_thread_environment() -> dict[str, str]:
+    """This process's environment with the BLAS pinned to one thread (``BLAS_THREAD_VARIABLES``), for a child process
+    that must compute as the committed documents were computed."""
+    return dict(os.environ, **{name: "1" for name in BLAS_THREAD_VARIABLES})
+
+
 def _run_derivations(args) -> int:
     from numeric.studies.documents import regenerate
 
@@ -441,8 +447,8 @@ def _run_derivations(args) -> int:
         # of tiny values. The committed files are one thread's; a process whose BLAS is already loaded cannot be
         # changed, so the run goes to a child process with the BLAS pinned (numpy's SIMD paths left these files alone)
         command = [sys.executable, "-m", "numeric.app.cli", "derivations", "--directory", str(directory)]
-        env = dict(os.environ, **{name: "1" for name in BLAS_THREAD_VARIABLES})
-        return subprocess.run(command + ["--check"] * args.check, env=env, check=False).returncode
+        return subprocess.run(command + ["--check"] * args.check, env=one_blas_thread_environment(),
+                              check=False).returncode
     stale = regenerate(directory, fast=args.fast, check=args.check, report=lambda m: sys.stdout.write(m + "\n"))
     if stale:
         sys.stderr.write("out of date (run python derivations/regenerate.py): " + ", ".join(stale) + "\n")

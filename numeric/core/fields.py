@@ -237,13 +237,12 @@ class SingularField:
             return out
         lay = self.layout
         xs = x[outer]
-        anchor, offset = point_offsets(lay, xs)
         # the integral runs over c < t < x: the slip elements starting above the largest point (by more than
         # SLIP_MARGIN, far beyond the rounding of u) give 0 and are left out
         start = np.where(lay.anchor == AT_C2, lay.c2, 1.0) + np.where(lay.kind == EDGE, -lay.hi, lay.lo)
-        top = np.max(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)
-        ops = AbelOperators(lay, (anchor, offset), names=("lower",),
-                            elements=np.flatnonzero((lay.zone == SLIP) & (start < top + SLIP_MARGIN)), divided=False)
+        ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",),
+                            elements=np.flatnonzero((lay.zone == SLIP) & (start < xs.max() ** 2 + SLIP_MARGIN)),
+                            divided=False)
         total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self._u_star_coefficients
         out[outer] = (2.0 / math.pi) * total / xs
         return out

@@ -44,10 +44,10 @@ import numpy as np
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
-from numeric.core.quadrature import gauss_legendre
-from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
                                        element_families)
+from numeric.core.quadrature import gauss_legendre
+from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
 MODE_BETA_MIN = 1e-9
 """The generic mode carries the exponent beta - 1 with beta = 1/2 - alpha, but at least this. In the scaling

@@ -466,6 +466,38 @@ def test_one_round_given_c_and_two_solves_given_mu(monkeypatch):
     assert len(rounds) == 2 and abs(back.c - 0.9) <= back.error
 
 
+@pytest.mark.parametrize("nu, c", [(0.25, 0.5), (0.0, 0.995), (-0.9, 0.3)])
+def test_given_mu_carries_the_solution_along_newtons_tangent(nu, c, monkeypatch):
+    # given mu, the last given-c solve's z is carried to theta = atan(mu gamma) along Newton's dz/dtheta
+    # (``plane_at_theta``, ``numeric.core.eigenvalue.TANGENT_REACH``), as on the axisymmetric side, instead of a new LU
+    # at theta: the guided solves start Newton at theta, so the carried z is that LU's own solution up to the rounding
+    # of adding and removing Newton's last step. Against a new solve at theta on the same system the load, p, q and u
+    # (relative to max(1, |p|)) agree to 0 at these points (measured; 6e-12 at nu = 0, c = 0.05, 3.7e-10 at nu = 0.49,
+    # c = 0.3 where both lie ~2e-9 from level 3); bound 1e-11, below the level's 1e-9, and no LU is formed for it
+    import dataclasses
+
+    from asymptotics.materials import gamma_from_nu
+    from numeric.core import plane_eigenvalue
+    from numeric.core.linear_algebra import EquilibratedLU
+    mu = plane.friction_coefficient(c, nu)
+    factored = []
+    original = plane_eigenvalue.EquilibratedLU
+    monkeypatch.setattr(plane_eigenvalue, "EquilibratedLU", lambda *a, **k: factored.append(a) or original(*a, **k))
+    s = plane.flat_punch(nu=nu, mu=mu)
+    carried = s.field.solution
+    assert carried.theta == math.atan(mu * float(gamma_from_nu(nu))) and carried.tangent is not None
+    assert not factored  # the given-c solves factor through newton_theta; plane_at_theta added none
+    system = carried.linearised
+    fresh = PlaneField(dataclasses.replace(carried, coefficients=EquilibratedLU(system.matrix(carried.theta)).solve(
+        system.rhs)))
+    x = np.array([0.0, 0.5 * s.c, s.c, np.nextafter(s.c, 2.0), 0.5 * (1 + s.c), 1 - 1e-5 * (1 - s.c)])
+    (p, q), (pf, qf) = s.field.pressure_shear(x), fresh.pressure_shear(x)
+    scale = np.maximum(1.0, np.abs(pf))
+    assert s.field.load == pytest.approx(fresh.load, rel=1e-11)
+    assert np.all(np.abs(p - pf) <= 1e-11 * scale) and np.all(np.abs(q - qf) <= 1e-11 * np.maximum(1.0, np.abs(qf)))
+    assert np.all(np.abs(s.field.slip(x) - fresh.slip(x)) <= 1e-11 * scale)
+
+
 def test_a_badly_conditioned_layout_gives_way_to_the_alternate():
     # at nu = 0, c = 0.05 (alpha = 0.033, below PLANE_PIN_FROM: p's singular family on the stick end is free) gamma^2
     # times the default layout's condition number at the root exceeds CONDITION_LIMIT: the route solves again in the

@@ -41,7 +41,7 @@ from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
 __all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
-           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE"]
+           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE", "TANGENT_REACH"]
 
 HALF_PI = 0.5 * math.pi
 #: The basis exponent is settled when it moves mu gamma = tan(theta) by less than this, relative. (A tolerance

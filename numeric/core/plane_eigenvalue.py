@@ -29,7 +29,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from numeric.core.eigenvalue import newton_theta
+from numeric.core.eigenvalue import TANGENT_REACH, newton_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
@@ -77,6 +77,7 @@ class PlaneEigensolution:
     slope: float = math.nan  # dG/dtheta (given c) or dG/dxi (given theta) at the solution, where the iteration had it
     linearised: LinearisedPlaneSystem | None = None  # the linearised system that gave it (for the system at another theta)
     conditioning: float = math.nan  # 1-norm condition number of the equilibrated D at the root, where Newton had it
+    tangent: np.ndarray | None = None  # dz/dtheta on ``linearised`` within Newton's last step, where Newton formed it
 
     @property
     def layout(self) -> PlaneLayout:
@@ -151,20 +152,32 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
             break
         if moved <= max(OUTER_TOLERANCE * new, noise):
             return PlaneEigensolution(system.at(new), ops, new, root.coefficients, root.last_step, root.slope, system,
-                                      root.lu.condition())
+                                      root.lu.condition(), root.tangent)
         theta, step = new, max(EXPONENT_STEP, moved / new)
     raise SolverError(f"the linearised iteration did not settle for c = {c}, gamma = {gamma}")
 
 
 def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolution:
     """The solution on the same (linearised) system at theta itself: given mu, the last given-c solve's theta differs
-    from atan(mu gamma) by its remaining step in c (below 1e-12 in logit c), and the stresses are taken at mu."""
+    from atan(mu gamma) by its remaining step in c (below 1e-12 in logit c), and the stresses are taken at mu.
+
+    As the axisymmetric ``numeric.core.eigenvalue`` does, z moves to theta along Newton's dz/dtheta where theta and
+    Newton's last step are both within ``TANGENT_REACH`` of the distance to pi/2 (the second-order remainder ~1e-16
+    of z), else by a new solve. The guided solves start Newton at theta itself, so where its first step was its last
+    the move undoes that step and gives the LU's own solution at theta. Measured over 51 given-mu solves (nu from -0.9
+    to 0.49, c from 0.02 to 0.97) against a new solve at theta: p, q, u at 14 points and the load identical at 49, within
+    6e-12 of max(1, |p|) at nu = 0, c = 0.05, and 3.7e-10 at nu = 0.49, c = 0.3, where both lie ~2e-9 from level 3
+    (the new solve the farther: q 2.7e-9 against 2.3e-9). One LU of up to 730 unknowns saved a given-mu solve."""
     system = solution.linearised
     if system is None or theta == solution.theta:
         return solution
-    z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+    reach = TANGENT_REACH * (HALF_PI - theta)
+    if solution.tangent is not None and abs(theta - solution.theta) <= reach and solution.last_step <= reach:
+        z = solution.coefficients + (theta - solution.theta) * solution.tangent
+    else:
+        z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
     return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta),
-                              solution.slope, system, solution.conditioning)
+                              solution.slope, system, solution.conditioning, solution.tangent)
 
 
 def plane_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: PlaneResolution,

@@ -40,12 +40,14 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      outside_projector,
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
-from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, Layout, collocation, family_factors,
+from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, collocation,
+                                 collocation_chart, family_factors,
                                  shifted_legendre)
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
-__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor"]
+__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
+           "partner_near_rule"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -72,6 +74,25 @@ NAMES = ("upper", "lower")
 def plain_legendre(nq: int, degree: int) -> np.ndarray:
     """Shifted Legendre values at the nq Gauss points of [0, 1]."""
     return shifted_legendre(degree, gauss01(nq)[0])
+
+
+@lru_cache(maxsize=None)
+def partner_near_rule(partner_kind: int, partner_n: int, degree: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The near-outside rule of an element touching c^2 at its partner's collocation points (the element on the other
+    side of c^2, of the same length): which of the partner's points (chart order) lie within NEAR_OUTSIDE of the shared
+    end, d = -s^2 there (s the partner's chart points), and S, W, P of ``sqrt_near_outside_rule`` (read-only).
+
+    Both ends have length c_fraction * min(c^2, 1 - c^2) and their charts are anchored at c^2, so these points, their
+    rule and its Legendre values are the same for every c: formed once per degree, not per layout. (Formed from the
+    offsets, d differs from -s^2 by the rounding of L s^2 / L.)"""
+    s = collocation_chart(partner_kind, partner_n)
+    d = -(s * s)
+    take = np.flatnonzero(-d < NEAR_OUTSIDE)
+    S, W = sqrt_near_outside_rule(d[take], degree)
+    out = (take, S, W, shifted_legendre(degree, S))
+    for a in out:
+        a.setflags(write=False)
+    return out
 
 
 def _weighted_sum(W: np.ndarray, P: np.ndarray) -> np.ndarray:
@@ -164,7 +185,7 @@ class AbelOperators:
         self._terms: dict[int, dict[str, list[_Term]]] = {}
         for k in np.flatnonzero(~is_plain):
             e = int(elements[k])
-            self._terms[e] = self._singular(e, rel[:, k], own[:, k])
+            self._terms[e] = self._singular(e, rel[:, k], own[:, k], owner)
             if lay.kind[e] != EDGE:  # the regular family of the elements at c does not depend on alpha
                 cols = slice(int(lay.starts[e]), int(lay.starts[e]) + int(lay.degree[e]) + 1)
                 for key, terms in self._terms[e].items():
@@ -246,8 +267,10 @@ class AbelOperators:
         if slip_k.size:
             self._fixed["integral/x"][slip_cols] = (L[slip_k, None] * ((wq[None, :] * inv_x[slip_k]) @ Pq)).ravel()
 
-    def _singular(self, e: int, rel: np.ndarray, own: np.ndarray) -> dict[str, list[_Term]]:
-        """The quadrature terms of singular element e for every point, per name."""
+    def _singular(self, e: int, rel: np.ndarray, own: np.ndarray, owner: np.ndarray) -> dict[str, list[_Term]]:
+        """The quadrature terms of singular element e for every point (``owner``: each point's element, -1 off the
+        collocation points), per name. The near rule at the points of the partner end across c^2 is
+        ``partner_near_rule``'s."""
         lay = self.layout
         L, m, deg = lay.length(e), int(lay.n_basis[e]), int(lay.degree[e])
         slip = lay.zone[e] == SLIP and self.divided  # the integrals of phi/sqrt(u) too
@@ -265,6 +288,14 @@ class AbelOperators:
             u_c = A + sign * L * Sc * Sc
         out: dict[str, list[_Term]] = {}
         own_rows = np.flatnonzero(own)
+        partner_rows = None  # the partner end's points that ``partner_near_rule`` covers
+        if lay.kind[e] in (STICK_END, SLIP_END):
+            partner = e + 1 if lay.kind[e] == STICK_END else e - 1
+            if lay.length(partner) == L:
+                rows_of_partner = np.flatnonzero(owner == partner)
+                if rows_of_partner.size == lay.n_basis[partner]:
+                    take = partner_near_rule(int(lay.kind[partner]), int(lay.n_basis[partner]), deg)[0]
+                    partner_rows = rows_of_partner[take]
         for away in (True, False):
             upper = away == (sign > 0.0)  # slip end: u > v is s > s_v
             name = "upper" if upper else "lower"
@@ -289,8 +320,13 @@ class AbelOperators:
             if rows.size:
                 terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows], away), So, Po, True, projector))
             if near.any():
-                S, W = sqrt_near_outside_rule(d[near], deg)
-                terms.append(_Term(np.flatnonzero(near), rL * W, S, shifted_legendre(deg, S), False))
+                rows = np.flatnonzero(near)
+                if partner_rows is not None and away and np.array_equal(rows, partner_rows):
+                    _, S, W, P = partner_near_rule(int(lay.kind[partner]), int(lay.n_basis[partner]), deg)
+                    terms.append(_Term(rows, rL * W, S, P, False))
+                else:
+                    S, W = sqrt_near_outside_rule(d[near], deg)
+                    terms.append(_Term(rows, rL * W, S, shifted_legendre(deg, S), False))
             out[name] = terms
             if slip:
                 out[name + "/x"] = [_Term(t.rows, t.W / np.sqrt(_nodes_u(t, u_o, u_c, A, sign * L)), t.S, t.P, t.shared,

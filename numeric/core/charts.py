@@ -344,11 +344,17 @@ def collocation_chart(kind: int, n: int) -> np.ndarray:
 
 
 def collocation(lay: Layout) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Collocation points, element by element: anchor codes, offsets, and x = sqrt(u)."""
-    anchors, offsets = [], []
-    for e in range(len(lay)):
-        s = collocation_chart(int(lay.kind[e]), int(lay.n_basis[e]))
-        anchors.append(np.full(s.size, lay.anchor[e]))
-        offsets.append(chart_offset(lay, e, s))
-    anchor, offset = np.concatenate(anchors), np.concatenate(offsets)
+    """Collocation points, element by element: anchor codes, offsets, and x = sqrt(u).
+
+    The offsets are ``chart_offset``'s, the plain elements' (which share one chart) formed together."""
+    anchor = np.repeat(lay.anchor, lay.n_basis)
+    offset = np.empty(anchor.size)
+    plain = np.flatnonzero(lay.kind == PLAIN)
+    if plain.size:  # lo + L s, as chart_offset
+        s = collocation_chart(PLAIN, int(lay.n_basis[plain[0]]))
+        rows = lay.starts[plain][:, None] + np.arange(s.size)[None, :]
+        offset[rows] = lay.lo[plain][:, None] + (lay.hi[plain] - lay.lo[plain])[:, None] * s[None, :]
+    for e in np.flatnonzero(lay.kind != PLAIN):
+        offset[int(lay.starts[e]): int(lay.starts[e + 1])] = chart_offset(
+            lay, int(e), collocation_chart(int(lay.kind[e]), int(lay.n_basis[e])))
     return anchor, offset, np.sqrt(np.where(anchor == AT_C2, lay.c2, 1.0) + offset)

@@ -237,3 +237,30 @@ def test_the_plane_reference_is_the_converged_value():
     from numeric.studies.plane_bench import reference_mu
 
     assert abs(reference_mu(0.3, 0.5) / 0.23740259715125 - 1) < 1.5e-11
+
+
+def test_the_schemes_time_to_the_target_is_interpolated_between_its_meshes():
+    # error 1e-3 * (t / 1 ms)^-1: 2e-4 at 5 ms, 5e-5 at 20 ms; 1e-4 is crossed at 10 ms exactly (log-log line)
+    from numeric.studies.equal_accuracy import TARGET, time_to_target
+    points = [(t, 1e-3 * (t / 1e-3) ** -1) for t in (1e-3, 5e-3, 2e-2)]
+    seconds, extrapolated = time_to_target(points)
+    assert seconds == pytest.approx(1e-2, rel=1e-12) and not extrapolated
+    # none within 1e-4: the line through all three is extrapolated to it (the same 10 ms)
+    seconds, extrapolated = time_to_target(points[:2])
+    assert seconds == pytest.approx(1e-2, rel=1e-12) and extrapolated and TARGET == 1e-4
+    # an error that grows with the time is not extrapolated; the first mesh within the target is its own time
+    assert time_to_target([(1e-3, 2e-4), (2e-3, 3e-4)]) == (None, False)
+    assert time_to_target([(1e-3, 5e-5), (2e-3, 1e-5)]) == (1e-3, False)
+
+
+def test_equal_accuracy_rows_render_with_their_ratio():
+    from numeric.studies.bench_report import render
+    from numeric.studies.equal_accuracy import EqualAccuracy
+    rows = (EqualAccuracy(0.25, 0.5, 2e-3, 1e-7, ((0.01, 2e-3, 2e-4), (0.005, 1e-2, 8e-5)), 8e-3, False),
+            EqualAccuracy(0.0, 0.99, 2e-3, 1e-7, ((0.01, 5e-3, 1e-2),), 1e9, True),
+            EqualAccuracy(-0.5, 0.5, 2e-3, 1e-7, (), None, False, "the paper's scheme finds no eigenvalue"))
+    text = render(Benchmark(FULL, (), (), (), (), 1.0, {}, (), (), rows))
+    assert "| 0.25 | 0.5 | 2 | 1.0e-07 | 8.0e-05 (0.005) | 8 | 4 |" in text
+    assert "| 0 | 0.99 | 2 | 1.0e-07 | 1.0e-02 (0.01) | > 1 h (extrapolated) | > 1e5 |" in text
+    assert "scheme fails: the paper's scheme finds no eigenvalue" in text
+    assert "Over the 2 cases with a ratio: median 2.5e+11, least 4." in text

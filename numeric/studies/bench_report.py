@@ -19,6 +19,7 @@ from pathlib import Path
 
 from numeric.studies.bench import (ASYMPTOTIC, CLOSED_FORM, METHODS, QUANTITIES, QUANTITY_TEXT, SCHEME, SCHEME_GRADED,
                                    SOLVER, TABLE, TARGET, Benchmark, Headline, Row, headline)
+from numeric.studies.equal_accuracy import H, summary
 
 __all__ = ["render", "plot"]
 
@@ -83,7 +84,7 @@ def _quantity_table(rows: Sequence[Row], quantity: str, adhesive: bool) -> list[
 
 def render(bench: Benchmark) -> str:
     """The Markdown record (rows in a fixed order; the timings themselves vary from run to run)."""
-    lines = (_preamble(bench) + _side_by_side(bench) + _plane(bench) + _headlines(bench) + _references(bench)
+    lines = (_preamble(bench) + _side_by_side(bench) + _equal_accuracy(bench) + _plane(bench) + _headlines(bench) + _references(bench)
              + _setups(bench) + _every_method(bench))
     return "\n".join(lines) + "\n"
 
@@ -122,6 +123,44 @@ def _side_by_side(bench: Benchmark) -> list[str]:
              "| task | time, ms | ratio to the scheme | worst error | points | reference |", "|---|---|---|---|---|---|"]
     lines += [f"| {s.task} | {_ms(s.seconds)} | {s.ratio:.3g} | {_err(s.error)} | {s.points} | {s.reference} |"
               for s in bench.side_by_side]
+    return lines + [""]
+
+
+def _seconds_text(seconds: float | None, extrapolated: bool) -> str:
+    """A time to the target for the table: ms, or (extrapolated beyond an hour) '> 1 h'."""
+    if seconds is None:
+        return "not reached"
+    text = "> 1 h" if seconds > 3600.0 else _ms(seconds)
+    return f"{text} (extrapolated)" if extrapolated else text
+
+
+def _equal_accuracy(bench: Benchmark) -> list[str]:
+    if not bench.equal_accuracy:
+        return []
+    lines = ["## The paper's scheme at the rtol = 1e-4 route's accuracy (same run)", "",
+             "From `numeric.studies.equal_accuracy`: per case of the rtol = 1e-4 task (given c), the route's full "
+             "solution and the paper's scheme on friction meshes of coarse width h = "
+             + ", ".join(f"{h:g}" for h in H) + " until its full solution (mu, P* and p, q, u at its points nearest "
+             "x = 0, c/2, (1 + c)/2, relative to max(1, |p|)) is within 1e-4 of level 4; its time to 1e-4 "
+             "interpolated in log-log between the first mesh within it and the one before, else extrapolated from all "
+             "its meshes. The route's error is taken the same way, and at x = c. Ratio: the scheme's time to 1e-4 over "
+             "the route's.", "",
+             "| nu | c | route, ms | route's worst error | scheme's best error (h) | scheme's time to 1e-4 | ratio |",
+             "|---|---|---|---|---|---|---|"]
+    for r in bench.equal_accuracy:
+        best = min(r.scheme, key=lambda run: run[2]) if r.scheme else None
+        best_text = "" if best is None else f"{_err(best[2])} ({best[0]:g})"
+        ratio = r.ratio
+        if ratio is None:
+            ratio_text = f"scheme fails: {r.failure}" if r.failure else ""
+        else:
+            ratio_text = "> 1e5" if ratio > 1e5 else f"{ratio:.3g}"
+        lines.append(f"| {r.nu:g} | {r.c:g} | {_ms(r.route_seconds)} | {_err(r.route_error)} | {best_text} "
+                     f"| {_seconds_text(r.scheme_seconds, r.extrapolated)} | {ratio_text} |")
+    found = summary(bench.equal_accuracy)
+    if found is not None:
+        median, least, largest, count = found
+        lines += ["", f"Over the {count} cases with a ratio: median {median:.3g}, least {least:.3g}."]
     return lines + [""]
 
 

@@ -258,9 +258,9 @@ def test_equal_accuracy_rows_render_with_their_ratio():
     from numeric.studies.equal_accuracy import EqualAccuracy
     rows = (EqualAccuracy(0.25, 0.5, 2e-3, 1e-7, ((0.01, 2e-3, 2e-4), (0.005, 1e-2, 8e-5)), 8e-3, False),
             EqualAccuracy(0.0, 0.99, 2e-3, 1e-7, ((0.01, 5e-3, 1e-2),), 1e9, True),
-            EqualAccuracy(-0.5, 0.5, 2e-3, 1e-7, (), None, False, "the paper's scheme finds no eigenvalue"))
+            EqualAccuracy(-0.5, 0.5, 2e-3, 1e-7, (), None, False, "finds no eigenvalue at h = 0.0035"))
     text = render(Benchmark(FULL, (), (), (), (), 1.0, {}, (), (), rows))
     assert "| 0.25 | 0.5 | 2 | 1.0e-07 | 8.0e-05 (0.005) | 8 | 4 |" in text
     assert "| 0 | 0.99 | 2 | 1.0e-07 | 1.0e-02 (0.01) | > 1 h (extrapolated) | > 1e5 |" in text
-    assert "scheme fails: the paper's scheme finds no eigenvalue" in text
+    assert "| not reached | the scheme finds no eigenvalue at h = 0.0035 |" in text
     assert "Over the 2 cases with a ratio: median 2.5e+11, least 4." in text

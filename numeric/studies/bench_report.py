@@ -152,7 +152,7 @@ def _equal_accuracy(bench: Benchmark) -> list[str]:
         best_text = "" if best is None else f"{_err(best[2])} ({best[0]:g})"
         ratio = r.ratio
         if ratio is None:
-            ratio_text = f"scheme fails: {r.failure}" if r.failure else ""
+            ratio_text = f"the scheme {r.failure}" if r.failure else ""
         else:
             ratio_text = "> 1e5" if ratio > 1e5 else f"{ratio:.3g}"
         lines.append(f"| {r.nu:g} | {r.c:g} | {_ms(r.route_seconds)} | {_err(r.route_error)} | {best_text} "

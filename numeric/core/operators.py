@@ -47,7 +47,7 @@ from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
 __all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
-           "partner_near_rule"]
+           "partner_near_rule", "projected_outside_legendre", "self_legendre_block"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -77,10 +77,12 @@ def plain_legendre(nq: int, degree: int) -> np.ndarray:
 
 
 @lru_cache(maxsize=None)
-def partner_near_rule(partner_kind: int, partner_n: int, degree: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def partner_near_rule(partner_kind: int, partner_n: int, degree: int
+                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The near-outside rule of an element touching c^2 at its partner's collocation points (the element on the other
     side of c^2, of the same length): which of the partner's points (chart order) lie within NEAR_OUTSIDE of the shared
-    end, d = -s^2 there (s the partner's chart points), and S, W, P of ``sqrt_near_outside_rule`` (read-only).
+    end, d = -s^2 there (s the partner's chart points), S, W, P of ``sqrt_near_outside_rule`` and their block of the
+    Legendre family, sum_q W P (read-only).
 
     Both ends have length c_fraction * min(c^2, 1 - c^2) and their charts are anchored at c^2, so these points, their
     rule and its Legendre values are the same for every c: formed once per degree, not per layout. (Formed from the
@@ -89,9 +91,29 @@ def partner_near_rule(partner_kind: int, partner_n: int, degree: int) -> tuple[n
     d = -(s * s)
     take = np.flatnonzero(-d < NEAR_OUTSIDE)
     S, W = sqrt_near_outside_rule(d[take], degree)
-    out = (take, S, W, shifted_legendre(degree, S))
+    P = shifted_legendre(degree, S)
+    out = (take, S, W, P, _weighted_sum(W, P))
     for a in out:
         a.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=None)
+def projected_outside_legendre(degree: int) -> np.ndarray:
+    """The Legendre values on the outside nodes projected onto the Chebyshev points (``outside_projector`` @ P): the
+    far points' block of the Legendre family is their kernel's weights times this (read-only)."""
+    out = outside_projector(degree) @ sqrt_outside_nodes(degree)[3]
+    out.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=None)
+def self_legendre_block(kind: int, n: int, away: bool, degree: int) -> np.ndarray:
+    """sum_q W[r, q] P_j(S[r, q]) of ``sqrt_self_rule`` (its own points' block of the Legendre family, without the
+    factor sqrt(L)); the same for every element of this kind (read-only)."""
+    S, W, P = sqrt_self_rule(kind, n, away, degree)
+    out = _weighted_sum(W, P)
+    out.setflags(write=False)
     return out
 
 
@@ -136,10 +158,20 @@ class _Term:
     P: np.ndarray
     shared: bool
     projector: np.ndarray | None = None
+    regular: np.ndarray | None = None  # the Legendre family's block, where it comes from a cached product
 
     def contract(self, basis: np.ndarray) -> np.ndarray:
         """The block for a basis tabulated on the shared nodes, basis (q, columns)."""
         return self.W @ (basis if self.projector is None else self.projector @ basis)
+
+    def legendre_block(self, degree: int) -> np.ndarray:
+        """The block of the Legendre family P_0 .. P_degree (the regular family of the elements at c): the cached
+        product where there is one (``regular``; the projected nodes' ``projected_outside_legendre``)."""
+        if self.regular is not None:
+            return self.regular
+        if self.projector is not None:
+            return self.W @ projected_outside_legendre(degree)
+        return self.W @ self.P if self.shared else _weighted_sum(self.W, self.P)
 
 
 def _nodes_u(t: _Term, u_outside: np.ndarray, u_chebyshev: np.ndarray, anchor: float, scale: float) -> np.ndarray:
@@ -191,7 +223,7 @@ class AbelOperators:
                 for key, terms in self._terms[e].items():
                     target = self._fixed[key]
                     for t in terms:
-                        block = t.contract(t.P) if t.shared else _weighted_sum(t.W, t.P)
+                        block = t.legendre_block(int(lay.degree[e]))
                         if t.rows is None:
                             target[cols] = block[0]
                         else:
@@ -304,7 +336,8 @@ class AbelOperators:
             terms = []
             if own_rows.size:
                 S, W, P = sqrt_self_rule(int(lay.kind[e]), m, away, deg)
-                terms.append(_Term(own_rows, rL * W, S, P, False))
+                terms.append(_Term(own_rows, rL * W, S, P, False,
+                                   regular=rL * self_legendre_block(int(lay.kind[e]), m, away, deg)))
             if inside_any:
                 S, W = sqrt_inside_rule(np.sqrt(d[inside]), away, deg)
                 terms.append(_Term(np.flatnonzero(inside), rL * W, S, shifted_legendre(deg, S), False))
@@ -322,8 +355,8 @@ class AbelOperators:
             if near.any():
                 rows = np.flatnonzero(near)
                 if partner_rows is not None and away and np.array_equal(rows, partner_rows):
-                    _, S, W, P = partner_near_rule(int(lay.kind[partner]), int(lay.n_basis[partner]), deg)
-                    terms.append(_Term(rows, rL * W, S, P, False))
+                    _, S, W, P, block = partner_near_rule(int(lay.kind[partner]), int(lay.n_basis[partner]), deg)
+                    terms.append(_Term(rows, rL * W, S, P, False, regular=rL * block))
                 else:
                     S, W = sqrt_near_outside_rule(d[near], deg)
                     terms.append(_Term(rows, rL * W, S, shifted_legendre(deg, S), False))

@@ -336,8 +336,8 @@ class AbelOperators:
             terms = []
             if own_rows.size:
                 S, W, P = sqrt_self_rule(int(lay.kind[e]), m, away, deg)
-                terms.append(_Term(own_rows, rL * W, S, P, False,
-                                   regular=rL * self_legendre_block(int(lay.kind[e]), m, away, deg)))
+                regular = None if lay.kind[e] == EDGE else rL * self_legendre_block(int(lay.kind[e]), m, away, deg)
+                terms.append(_Term(own_rows, rL * W, S, P, False, regular=regular))
             if inside_any:
                 S, W = sqrt_inside_rule(np.sqrt(d[inside]), away, deg)
                 terms.append(_Term(np.flatnonzero(inside), rL * W, S, shifted_legendre(deg, S), False))

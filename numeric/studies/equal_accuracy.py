@@ -30,7 +30,8 @@ from numeric.core.eigenvalue import operators_at
 from numeric.solutions.flat_punch import flat_punch
 from numeric.studies.timing import median_time
 
-__all__ = ["TARGET", "H", "PUBLISHED_H", "scheme_tolerance", "EqualAccuracy", "time_to_target", "equal_accuracy", "summary"]
+__all__ = ["TARGET", "H", "PUBLISHED_H", "scheme_tolerance", "EqualAccuracy", "time_to_target", "equal_accuracy",
+           "summary"]
 
 #: The engineer's accuracy: the rtol of the route.
 TARGET = 1e-4
@@ -49,7 +50,8 @@ def scheme_tolerance(h: float) -> float:
 @dataclass(frozen=True, slots=True)
 class EqualAccuracy:
     """One case: the route's time and worst error, the scheme's (h, seconds, worst error) per mesh run, and its time
-    to ``TARGET`` (``extrapolated`` if no mesh reached it; None if the scheme failed on every mesh: ``failure``)."""
+    to ``TARGET`` (``extrapolated`` if no mesh reached it; None where its error did not fall with the time, or no two
+    meshes ran; ``failure`` then names the mesh on which the scheme found no eigenvalue, if it did not run)."""
 
     nu: float
     c: float

@@ -35,6 +35,8 @@ from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import gap_max
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
+from numeric.solutions.plane_small_gamma import (CHECK_NODES, NODES, SMALL_GAMMA, small_gamma_friction,
+                                                 small_gamma_stick_width_step)
 from numeric.solutions.flat_punch import check_rtol
 from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS,
                                             ROUNDING_FLOOR, beyond_table_toward_full_stick, full_stick_friction,
@@ -116,8 +118,9 @@ class StripPunchSolution:
         "frictionless (Sadowsky)", "full stick (Abramov)", "solver level L, n unknowns" (or "solver level L (alternate
         layout), ...": the level's layout was near a pole of the eigen functional, ``numeric.solutions.plane_solver.
         CONDITION_LIMIT``), "limit mu -> inf ...",
-        "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6) or
-        "full stick to within ..." (1 - c < 2^-40 at small gamma).
+        "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
+        "full stick to within ..." (1 - c < 2^-40 at small gamma) or "small-gamma series ..." (gamma < 0.005, nu near
+        1/2: mu from a series in gamma^2 through the solver at larger gamma, ``numeric.solutions.plane_small_gamma``).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
 
@@ -198,6 +201,14 @@ def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError
                               fine.residual, fine)
 
 
+def _small_gamma_route(level: int) -> str:
+    return (f"small-gamma series (gamma < {SMALL_GAMMA:g}): mu/gamma = K(c)/K'(c) + gamma^2 r, r quadratic in gamma^2 "
+            f"through solver level {level} at gamma = {', '.join(f'{g:g}' for g in NODES)} (error: 3x its distance "
+            f"from the series through {', '.join(f'{g:g}' for g in CHECK_NODES)}); stresses of the level-{level} solve "
+            "at c, at its own eigenvalue (off it the mode's (c - x)^(-1/2 - alpha) enters at x = c), whose mu is within "
+            "the solver's error of this one")
+
+
 #: Given c, 1 - c below 1 - c_max of the guess table by more than this (relative) is refused at once (the table's
 #: 1 - c_max is good to ~1e-8 relative; nearer, the solver decides): Newton in theta failed to converge there before.
 ABOVE_C_MAX = 1e-6
@@ -270,6 +281,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
         solve = solve_given_c(c, 1.0 - c, g, level)
+        if g < SMALL_GAMMA:
+            mu, error = small_gamma_friction(c, 1.0 - c, g, level)
+            return _from_field(nu, solve.field, error, level, mu, _small_gamma_route(level))
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
     if mu == 0.0:
@@ -293,6 +307,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
     solve = solve_given_mu(mu, g, level)
+    if g < SMALL_GAMMA:
+        gap, error = small_gamma_stick_width_step(solve.field.c, solve.field.gap, g, mu, level)
+        return _from_field(nu, solve_given_c(1.0 - gap, gap, g, level).field, error, level, mu, _small_gamma_route(level))
     return _from_field(nu, solve.field, solve.error, level, mu)
 
 

@@ -82,10 +82,27 @@ class PlaneField:
         self._q[sys.slip_columns] = (math.sin(self.theta) / self.gamma) * R
         self._starts = solution.operators.starts
         self._last_points: tuple | None = None  # (points, (p, q)) of the last ``pressure_shear``
+        self._friction: float | None = None  # mu where the slip zones' q was set from it (``with_friction``)
 
     @property
     def mu(self) -> float:
+        if self._friction is not None:
+            return self._friction
         return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
+
+    def with_friction(self, mu: float) -> PlaneField:
+        """The same solution with q = mu p on the slip zones for a mu known better than this solution's own (the
+        small-gamma series, ``numeric.solutions.plane_small_gamma``, within this solution's error of it): p and the
+        stick zone's q unchanged; on the slip zones q = mu p (its coefficients, for the slip u, and the values, as the
+        product, to the last bit)."""
+        out = PlaneField.__new__(PlaneField)
+        out.__dict__.update({k: v for k, v in self.__dict__.items() if k not in ("_q", "_last_points")})
+        out._q = self._q.copy()
+        cols = self.solution.system.slip_columns
+        out._q[cols] = mu * self._p[cols]
+        out._last_points = None
+        out._friction = mu
+        return out
 
     @cached_property
     def load(self) -> float:
@@ -126,6 +143,9 @@ class PlaneField:
         with np.errstate(invalid="ignore"):
             p = B @ self._p
             q = B @ self._q
+        if self._friction is not None:  # q = mu p on the slip zones as the product, to the last bit
+            slip = ax > self.c
+            q[slip] = self._friction * p[slip]
         edge = ax == 1.0
         if np.any(edge):  # (1 - x)^(alpha - 1/2): infinite for mu < inf; at mu = inf p = 0 and q is finite
             p[edge] = 0.0 if self.theta >= 0.5 * math.pi else math.inf

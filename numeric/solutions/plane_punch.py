@@ -205,8 +205,8 @@ def _small_gamma_route(level: int) -> str:
     return (f"small-gamma series (gamma < {SMALL_GAMMA:g}): mu/gamma = K(c)/K'(c) + gamma^2 r, r quadratic in gamma^2 "
             f"through solver level {level} at gamma = {', '.join(f'{g:g}' for g in NODES)} (error: 3x its distance "
             f"from the series through {', '.join(f'{g:g}' for g in CHECK_NODES)}); stresses of the level-{level} solve "
-            "at c, at its own eigenvalue (off it the mode's (c - x)^(-1/2 - alpha) enters at x = c), whose mu is within "
-            "the solver's error of this one")
+            "at c, at its own eigenvalue (off it the mode's (c - x)^(-1/2 - alpha) enters at x = c), with q = mu p on "
+            "the slip zones for this mu")
 
 
 #: Given c, 1 - c below 1 - c_max of the guess table by more than this (relative) is refused at once (the table's
@@ -283,7 +283,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         solve = solve_given_c(c, 1.0 - c, g, level)
         if g < SMALL_GAMMA:
             mu, error = small_gamma_friction(c, 1.0 - c, g, level)
-            return _from_field(nu, solve.field, error, level, mu, _small_gamma_route(level))
+            return _from_field(nu, solve.field.with_friction(mu), error, level, mu, _small_gamma_route(level))
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
     if mu == 0.0:
@@ -309,7 +309,8 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     solve = solve_given_mu(mu, g, level)
     if g < SMALL_GAMMA:
         gap, error = small_gamma_stick_width_step(solve.field.c, solve.field.gap, g, mu, level)
-        return _from_field(nu, solve_given_c(1.0 - gap, gap, g, level).field, error, level, mu, _small_gamma_route(level))
+        field = solve_given_c(1.0 - gap, gap, g, level).field.with_friction(mu)
+        return _from_field(nu, field, error, level, mu, _small_gamma_route(level))
     return _from_field(nu, solve.field, solve.error, level, mu)
 
 

@@ -9,12 +9,15 @@ in gamma and analytic in gamma^2 (mu is odd in gamma), with the first-order law 
     r = F1(c) + F2(c) gamma^2 + F3(c) gamma^4 + ...
 
 (measured: r at c = 0.5 is 0.55013, 0.55031, 0.55101, 0.55384 at gamma = 0.01, 0.02, 0.04, 0.08, its changes growing
-fourfold per doubling of gamma). Below ``SMALL_GAMMA`` mu/gamma is taken from r interpolated in gamma^2 (a quadratic)
-through the solver's r at ``NODES`` (where the solver's mu is good to ~1e-10 and r to ~3e-7), extrapolated to gamma;
-its error is ``ERROR_FACTOR`` times the difference from the same series through ``CHECK_NODES`` (other truncation,
-other rounding), at least the solver's rounding floor. Measured at c = 0.05, 0.5, 0.97 (level 2 nodes): the two series
-differ by 3.4e-12 ... 7.4e-11 (relative) at gamma = 0.002 and 2.1e-11 ... 4.6e-10 at 0.005, where level 3's own
-estimate is 7e-8 ... 1.2e-6 and 1.1e-8 ... 1.8e-7; at gamma = 0.01 (c = 0.5) the series is within 3.4e-11 of level 3.
+fourfold per doubling of gamma). Below ``SMALL_GAMMA`` (nu > 0.4898) mu/gamma is taken from r interpolated in gamma^2
+(degree 5) through the solver's r at the six ``NODES`` (gamma = 0.06 ... 0.16, where the solver's mu is good to ~1e-11
+and r to ~3e-9), extrapolated to gamma; its error is ``ERROR_FACTOR`` times the difference from the same series through
+``CHECK_NODES`` (other truncation, other rounding), at least the solver's rounding floor. Measured at c = 0.05, 0.3,
+0.5, 0.9, 0.97, 0.99 (level 2 nodes): the two series differ by 6e-15 ... 1e-12 (relative) at gamma = 0.002, 2e-13 ...
+3e-11 at 0.01, 1e-12 ... 9e-11 at 0.02, and the series through level-3 nodes by 3e-14 ... 2e-12, 6e-12 ... 4e-11,
+3e-12 ... 1e-10; at gamma = 0.019 level 3's own estimate is 7.9e-10 ... 1.3e-8 and it meets the series to 8e-12 ...
+5.6e-10 (c = 0.05, 0.5, 0.97).
+A three-node series (gamma = 0.04, 0.08, 0.16) was good to ~1e-10 only below gamma = 0.005.
 
 References
 ----------
@@ -38,27 +41,26 @@ from numeric.solutions.plane_solver import ROUNDING_FLOOR, solve_given_c
 __all__ = ["SMALL_GAMMA", "NODES", "CHECK_NODES", "ERROR_FACTOR", "GammaSeries", "gamma_series",
            "small_gamma_friction", "small_gamma_stick_width_step"]
 
-#: Below this gamma (nu > 0.4975) mu comes from the series: there the series is good to ~5e-10 relative and the
-#: solver's own mu to no better than 1e-8.
-SMALL_GAMMA = 0.005
+#: Below this gamma (nu > 0.4898) mu comes from the series: there the series is good to ~1e-10 relative (its estimate
+#: 2.4e-10 at most, measured) and the solver's own mu to 7.9e-10 ... 1.3e-8 (level 3's estimate at gamma = 0.019).
+SMALL_GAMMA = 0.02
 #: gamma of the solver solves the series goes through, and of the second series its error is taken from.
-NODES = (0.04, 0.08, 0.16)
-CHECK_NODES = (0.05, 0.1, 0.2)
+NODES = (0.06, 0.08, 0.1, 0.12, 0.14, 0.16)
+CHECK_NODES = (0.07, 0.09, 0.11, 0.13, 0.15, 0.18)
 #: The error bound over the two series' difference.
 ERROR_FACTOR = 3.0
 
 
 @dataclass(frozen=True, slots=True)
 class GammaSeries:
-    """r(gamma) = coefficients[0] + coefficients[1] gamma^2 + coefficients[2] gamma^4 at one c (``gamma_series``)."""
+    """r(gamma) = sum_k coefficients[k] gamma^(2k) at one c (``gamma_series``)."""
 
     c: float
     coefficients: tuple[float, ...]
 
     def mu_over_gamma(self, gamma: float) -> float:
         t = gamma * gamma
-        a, b, d = self.coefficients
-        return float(mu_over_gamma_plane(self.c)) + t * (a + t * (b + t * d))
+        return float(mu_over_gamma_plane(self.c)) + t * float(np.polynomial.polynomial.polyval(t, self.coefficients))
 
 
 @lru_cache(maxsize=64)

@@ -41,7 +41,7 @@ from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
 __all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
-           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE", "TANGENT_REACH"]
+           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE", "TANGENT_REACH", "carried_along_tangent"]
 
 HALF_PI = 0.5 * math.pi
 #: The basis exponent is settled when it moves mu gamma = tan(theta) by less than this, relative. (A tolerance
@@ -270,6 +270,17 @@ def _logit_parts(xi: float) -> tuple[float, float]:
 TANGENT_REACH = 1e-8
 
 
+def carried_along_tangent(z: np.ndarray, theta_from: float, theta: float, tangent: np.ndarray | None,
+                          last_step: float) -> np.ndarray | None:
+    """z, a root's coefficients at theta_from, moved to theta to first order along Newton's dz/dtheta (``tangent``),
+    where the move and Newton's last step are both within ``TANGENT_REACH`` of the distance to pi/2 (the second-order
+    remainder is then ~1e-16 of z); None where they are not (or there is no tangent): the caller solves at theta."""
+    reach = TANGENT_REACH * (HALF_PI - theta)
+    if tangent is None or abs(theta - theta_from) > reach or last_step > reach:
+        return None
+    return z + (theta - theta_from) * tangent
+
+
 def _at_theta(sol: Eigensolution, theta: float) -> Eigensolution:
     """The solution on the same system at theta itself, where the friction it implies, tan(theta)/gamma, would
     differ from the one asked for by more than 1e-14 relative: d log mu / d theta = 1/(sin cos) is mu gamma near
@@ -286,10 +297,9 @@ def _at_theta(sol: Eigensolution, theta: float) -> Eigensolution:
     if miss <= 1e-14:
         return sol
     system = sol.system
-    reach = TANGENT_REACH * (HALF_PI - theta)
-    if sol.tangent is not None and abs(theta - sol.theta) <= reach and sol.newton_step <= reach:
-        return Eigensolution(system, theta, sol.coefficients + (theta - sol.theta) * sol.tangent,
-                             abs(theta - sol.theta), sol.tangent)
+    z = carried_along_tangent(sol.coefficients, sol.theta, theta, sol.tangent, sol.newton_step)
+    if z is not None:
+        return Eigensolution(system, theta, z, abs(theta - sol.theta), sol.tangent)
     z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
     return Eigensolution(system, theta, z, abs(theta - sol.theta))
 

@@ -53,14 +53,16 @@ ERROR_FACTOR = 3.0
 
 @dataclass(frozen=True, slots=True)
 class GammaSeries:
-    """r(gamma) = sum_k coefficients[k] gamma^(2k) at one c (``gamma_series``)."""
+    """mu/gamma = first_order + gamma^2 r(gamma), r = sum_k coefficients[k] gamma^(2k), at one c (``gamma_series``);
+    first_order = F0(c) = K(c)/K'(c)."""
 
     c: float
+    first_order: float
     coefficients: tuple[float, ...]
 
     def mu_over_gamma(self, gamma: float) -> float:
         t = gamma * gamma
-        return float(mu_over_gamma_plane(self.c)) + t * float(np.polynomial.polynomial.polyval(t, self.coefficients))
+        return self.first_order + t * float(np.polynomial.polynomial.polyval(t, self.coefficients))
 
 
 @lru_cache(maxsize=64)
@@ -69,7 +71,7 @@ def gamma_series(c: float, gap: float, level: int, nodes: tuple[float, ...] = NO
     f0 = float(mu_over_gamma_plane(c))
     t = np.array([g * g for g in nodes])
     r = np.array([(solve_given_c(c, gap, g, level).field.mu / g - f0) / (g * g) for g in nodes])
-    return GammaSeries(c, tuple(float(v) for v in np.linalg.solve(np.vander(t, t.size, increasing=True), r)))
+    return GammaSeries(c, f0, tuple(float(v) for v in np.linalg.solve(np.vander(t, t.size, increasing=True), r)))
 
 
 def small_gamma_friction(c: float, gap: float, gamma: float, level: int) -> tuple[float, float]:

@@ -78,7 +78,7 @@ from numeric.solutions.power_law import indentation_constant, power_law
 from numeric.solutions.sweep import friction_coefficient, stick_radius
 from numeric.studies.equal_accuracy import PUBLISHED_H, EqualAccuracy, equal_accuracy, scheme_tolerance
 from numeric.studies.plane_bench import plane_side_by_side
-from numeric.studies.timing import SideBySide, clear_caches, median_time
+from numeric.studies.timing import SideBySide, clear_caches, median_time, power_law_time
 
 __all__ = [
     "Case",
@@ -624,7 +624,7 @@ def headline(rows: Sequence[Row], quantity: str, target: float = TARGET) -> Head
             continue
         level = next(r.resolution for r in mine if r.method == SOLVER and r.seconds == t_ours)
         table = [(r.seconds, r.error) for r in mine if r.method == TABLE]
-        slope, t_extrapolated = _extrapolate(paper, target)
+        slope, t_extrapolated = power_law_time(paper, target)
         per_case.append((t_ours, level, published[0], best_error_within(paper, t_ours),
                          best_error_within(ours, published[0].seconds), min(t for t, _ in ours), table,
                          slope, t_extrapolated))
@@ -651,10 +651,3 @@ def headline(rows: Sequence[Row], quantity: str, target: float = TARGET) -> Head
         paper_slope=statistics.median(x[7] for x in per_case),
         paper_extrapolated_seconds=statistics.median(x[8] for x in per_case),
     )
-
-
-def _extrapolate(points: Sequence[tuple[float, float]], target: float) -> tuple[float, float]:
-    """Slope s of the least-squares line log(error) = a - s log(time), and the time where it reaches ``target``."""
-    log_t, log_e = np.log([t for t, _ in points]), np.log([e for _, e in points])
-    minus_s, a = np.polyfit(log_t, log_e, 1)
-    return float(-minus_s), float(np.exp((math.log(target) - a) / minus_s))

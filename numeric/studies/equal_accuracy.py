@@ -28,7 +28,7 @@ import numpy as np
 from numeric.baseline import scheme
 from numeric.core.eigenvalue import operators_at
 from numeric.solutions.flat_punch import flat_punch
-from numeric.studies.timing import median_time
+from numeric.studies.timing import median_time, power_law_time
 
 __all__ = ["TARGET", "H", "PUBLISHED_H", "scheme_tolerance", "EqualAccuracy", "time_to_target", "equal_accuracy",
            "summary"]
@@ -100,11 +100,10 @@ def time_to_target(points: Sequence[tuple[float, float]]) -> tuple[float | None,
             return math.exp(math.log(t0) + w * math.log(t1 / t0)), False
     if len(points) < 2:
         return None, False
-    log_t, log_e = np.log([t for t, _ in points]), np.log([e for _, e in points])
-    slope, intercept = np.polyfit(log_t, log_e, 1)
-    if slope >= 0.0:  # the error does not fall with the time: no extrapolation
+    slope, seconds = power_law_time(points, TARGET)
+    if slope <= 0.0:  # the error does not fall with the time: no extrapolation
         return None, False
-    return float(np.exp((math.log(TARGET) - intercept) / slope)), True
+    return seconds, True
 
 
 def equal_accuracy(cases: Sequence[tuple[float, float]], budget: float, max_runs: int) -> list[EqualAccuracy]:

@@ -1,15 +1,19 @@
-"""Timing of the benchmarks: the median time of a call, the caches a new problem would not find, and the record
-of one task timed beside a yardstick (``numeric.studies.bench``, ``numeric.studies.plane_bench``)."""
+"""Timing of the benchmarks: the median time of a call, the caches a new problem would not find, the record
+of one task timed beside a yardstick (``numeric.studies.bench``, ``numeric.studies.plane_bench``), and the time a
+method would need for an error, along the power law of its (time, error) points."""
 
 from __future__ import annotations
 
+import math
 import statistics
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-__all__ = ["SideBySide", "median_time", "clear_caches"]
+import numpy as np
+
+__all__ = ["SideBySide", "median_time", "clear_caches", "power_law_time"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,3 +73,11 @@ def clear_caches() -> tuple[str, ...]:
                 obj.cache_clear()
                 names.append(f"{name}.{attr}")
     return tuple(sorted(names))
+
+
+def power_law_time(points: Sequence[tuple[float, float]], target: float) -> tuple[float, float]:
+    """Slope s of the least-squares line log(error) = a - s log(time) through (time, error) points, and the time where
+    it reaches ``target`` (meaningful for s > 0: the error falls with the time)."""
+    log_t, log_e = np.log([t for t, _ in points]), np.log([e for _, e in points])
+    minus_s, a = np.polyfit(log_t, log_e, 1)
+    return float(-minus_s), float(np.exp((math.log(target) - a) / minus_s))

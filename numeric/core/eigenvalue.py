@@ -40,7 +40,7 @@ from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
-__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_given_theta",
+__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_on_operators", "solve_given_theta",
            "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE", "TANGENT_REACH", "carried_along_tangent"]
 
 HALF_PI = 0.5 * math.pi
@@ -183,7 +183,12 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
     Brent's method on a bracket, then Newton again from its root. The basis exponent is taken from the root
     again until it moves mu gamma = tan theta by less than ALPHA_TOLERANCE relative, or, once its change no longer
     shrinks (rounding of theta next to pi/2), by less than ALPHA_TOLERANCE in theta."""
-    ops = operators_at(c, gap, res)
+    return solve_on_operators(operators_at(c, gap, res), gamma, theta_guess, max_outer)
+
+
+def solve_on_operators(ops: AbelOperators, gamma: float, theta_guess: float, max_outer: int = 8) -> Eigensolution:
+    """``solve_given_c`` on the Abel integrals of a given layout (``operators_at``'s, or a mapped layout's:
+    ``numeric.core.layout_map``)."""
     theta = theta_guess
     bracketed = False
     outer = 0
@@ -204,7 +209,7 @@ def solve_given_c(c: float, gap: float, gamma: float, theta_guess: float, res: R
         theta, previous = root.theta, change
         if done:
             return Eigensolution(system, theta, root.coefficients, root.last_step, root.tangent)
-    raise SolverError(f"the basis exponent did not settle for c = {c}, gamma = {gamma}")
+    raise SolverError(f"the basis exponent did not settle for c = {ops.layout.c}, gamma = {gamma}")
 
 
 def _residual(c_logit: float, theta: float, gamma: float, res: Resolution):

@@ -27,7 +27,7 @@ from numeric.core.charts import (AT_C2, AT_ONE, EDGE, PLAIN, SLIP, SLIP_END, STI
 from numeric.core.eigenvalue import Eigensolution
 from numeric.core.operators import AbelOperators, normal_factor
 
-__all__ = ["SingularField", "point_offsets"]
+__all__ = ["SingularField", "TabulatedField", "point_offsets"]
 
 
 def point_offsets(lay: Layout, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -62,19 +62,24 @@ class SingularField:
     def __init__(self, solution: Eigensolution) -> None:
         self.solution = solution
         sys = solution.system
-        self.layout = sys.layout
-        self.gamma = sys.gamma
-        self.theta = solution.theta
-        self.alpha = sys.alpha
-        self.c = self.layout.c
-        self.gap = self.layout.gap  # 1 - c, formed without cancellation
-        self.n_unknowns = solution.coefficients.size
-        self._kept: dict[int, tuple[bytes, list]] = {}  # the last points' basis per zone (``_basis_at``)
+        self._adopt(sys.layout, sys.gamma, solution.theta, sys.alpha, solution.coefficients, sys.end_row)
         ns = sys.n_stick
-        z = solution.coefficients
-        self._P, self._Q, self._R = z[:ns], z[ns:2 * ns], z[2 * ns:]
         self.compliance = float(0.25 * math.pi * (sys.integral[:ns] @ self._P
                                                  + normal_factor(self.theta) * (sys.integral[ns:] @ self._R)))  # (2.4)
+
+    def _adopt(self, layout: Layout, gamma: float, theta: float, alpha: float, coefficients: np.ndarray,
+               end_row: np.ndarray) -> None:
+        self.layout = layout
+        self.gamma = gamma
+        self.theta = theta
+        self.alpha = alpha
+        self.c = layout.c
+        self.gap = layout.gap  # 1 - c, formed without cancellation
+        self.n_unknowns = coefficients.size
+        self._kept: dict[int, tuple[bytes, list]] = {}  # the last points' basis per zone (``_basis_at``)
+        ns = layout.n_stick
+        self._P, self._Q, self._R = coefficients[:ns], coefficients[ns:2 * ns], coefficients[2 * ns:]
+        self._end_row = end_row
 
     @property
     def mu(self) -> float:
@@ -177,7 +182,7 @@ class SingularField:
         e = self.layout.stick_end + 1  # the slip end
         if self._off_the_layer(e, np.zeros(1))[0] != 0.0:
             return None
-        return float(self.solution.system.end_row @ self._P)  # P(c-), the eigenvalue condition's own
+        return float(self._end_row @ self._P)  # P(c-), the eigenvalue condition's own
 
     def pressure(self, x: np.ndarray) -> np.ndarray:
         """p(x), 0 <= x < 1 (infinite at x = 1 for 0 <= mu < inf)."""
@@ -207,11 +212,15 @@ class SingularField:
         return out
 
     @cached_property
-    def _u_star_coefficients(self) -> np.ndarray:
-        """u* of (2.2b) interpolated at the slip collocation points in each slip element's basis."""
-        sys = self.solution.system
+    def u_star_values(self) -> np.ndarray:
+        """u* of (2.2b) at the slip collocation points (the slip's source)."""
+        return self.solution.system.u_star(self.theta, self.solution.coefficients)
+
+    @cached_property
+    def u_star_coefficients(self) -> np.ndarray:
+        """u* interpolated at the slip collocation points in each slip element's basis."""
         lay = self.layout
-        values = sys.u_star(self.theta, self.solution.coefficients)
+        values = self.u_star_values
         ns = lay.n_stick
         out = np.empty(values.size)
         slip = np.flatnonzero(lay.zone == SLIP)
@@ -243,6 +252,23 @@ class SingularField:
         ops = AbelOperators(lay, point_offsets(lay, xs), names=("lower",),
                             elements=np.flatnonzero((lay.zone == SLIP) & (start < xs.max() ** 2 + SLIP_MARGIN)),
                             divided=False)
-        total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self._u_star_coefficients
+        total = ops.matrices(self.alpha, displacement=True).lower[:, lay.n_stick:] @ self.u_star_coefficients
         out[outer] = (2.0 / math.pi) * total / xs
         return out
+
+
+class TabulatedField(SingularField):
+    """The fields of stored values (``numeric.core.field_table``): a layout, theta, the basis exponent alpha,
+    the coefficients of P, Q and R, u* (the slip's source) at the slip collocation points and P* given; no system
+    is formed."""
+
+    def __init__(self, layout: Layout, gamma: float, theta: float, alpha: float, coefficients: np.ndarray,
+                 u_star_values: np.ndarray, compliance: float) -> None:
+        self.solution = None
+        e = layout.stick_end
+        degree, first = int(layout.degree[e]), int(layout.starts[e])
+        end_row = np.zeros(layout.n_stick)  # the regular family at c-, as ``collocation_system``'s
+        end_row[first: first + degree + 1] = shifted_legendre(degree, np.zeros(1))[0]
+        self._adopt(layout, gamma, theta, alpha, coefficients, end_row)
+        self.u_star_values = u_star_values
+        self.compliance = compliance

@@ -174,6 +174,7 @@ def test_a_built_wheel_carries_the_table_coefficients(tmp_path):
     (wheel,) = tmp_path.glob("hertz_friction-*.whl")
     names = zipfile.ZipFile(wheel).namelist()
     assert "numeric/core/table_data.npy" in names and "numeric/core/table_data.py" in names
+    assert "numeric/core/field_table_data.npy" in names and "numeric/core/field_table_data.py" in names
 
 
 def test_threads_that_first_read_the_tables_together_load_them_once(monkeypatch):

@@ -107,7 +107,7 @@ def flat_punch(
         limits; else the asymptotic law for c <= 0.9 (first order (2.28) where its measured
         bound K2(gamma) gamma^2 meets rtol, else second order (2.28) + gamma^2 f2 where
         K4(gamma) gamma^4 does; ``numeric.solutions.law.K2_BOUNDS``, ``K4_BOUNDS``); for rtol >= 1e-4 the
-        whole-plane tables with level-0 stresses computed on first use
+        whole-plane tables with level-0 stresses formed on first use (tabulated for 0.05 <= c <= 0.9)
         (``numeric.solutions.table_route``: mu, c, P* to the tables' recorded errors, p and q to
         ``FIELD_ERROR`` = 5e-5 of max(1, |p|)); else the solver at the first
         level whose typical accuracy meets rtol (0: 1e-8, 1: 1e-9, 2: 1e-11, 3: 1e-12, else 4), and

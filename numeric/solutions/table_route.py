@@ -1,13 +1,16 @@
 """The engineer's route of ``numeric.flat_punch``: the whole-plane table, with fields on demand.
 
 For rtol >= ``TABLE_RTOL`` the table (``numeric.core.table``) answers c, mu and P* at once (to its
-recorded held-out errors, ~1e-10), and the stresses p, q and the slip u come from the level-0 solver
-(``numeric.core.charts.RESOLUTIONS[0]``) started at the table's theta = atan(mu gamma), computed
-only when first asked for (one assembly and one or two LU factorisations: Newton in theta from a
-guess good to 1e-10 stops after its first step). They are level 0's discrete eigensolution, not
+recorded held-out errors, ~1e-10), and the stresses p, q and the slip u are level 0's
+(``numeric.core.charts.RESOLUTIONS[0]``), formed only when first asked for: read from the field table
+(``numeric.core.field_table``: the level-0 eigensolution on a layout that moves smoothly with c, tabulated in
+(c, gamma) for 0.05 <= c <= 0.9 below mu gamma = 1; ~0.1 ms) where it holds the point, else solved from
+the table's theta = atan(mu gamma) (one assembly and one or two LU factorisations, ~2 ms: Newton in theta from a
+guess good to 1e-10 stops after its first step). Either is level 0's discrete eigensolution, not
 the table's theta with level 0's basis: off the discrete eigenvalue the basis carries a spurious
-(c - x)^(-1/2 - alpha) component at x = c. Measured against level 4 (``tests/test_table_route.py``)
-p and q are within ``FIELD_ERROR`` of max(1, |p|) at every x, x = c and 1 - x = 1e-5 included.
+(c - x)^(-1/2 - alpha) component at x = c. Measured against level 4 (``tests/test_table_route.py``,
+``tests/test_field_table.py``) p and q are within ``FIELD_ERROR`` of max(1, |p|) at every x, x = c and
+1 - x = 1e-5 included.
 
 References
 ----------
@@ -26,6 +29,7 @@ from asymptotics.largest_stick_radius import largest_stick_radius_gap
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.eigenvalue import solve_given_c
+from numeric.core.field_table import field_table_pieces, tabulated_field
 from numeric.core.fields import SingularField
 from numeric.core.table import TableValues, table_errors, table_given_c, table_given_mu
 from numeric.solutions.law import graded_breakpoints
@@ -48,14 +52,19 @@ TABLE_SECONDS = 2e-4
 
 
 class DeferredField:
-    """The level-0 solution at stick radius c = 1 - gap, solved when p, q or u are first asked for."""
+    """The level-0 fields at stick radius c = 1 - gap, read from the field table or solved when p, q or u are first
+    asked for."""
 
-    def __init__(self, c: float, gap: float, gamma: float, theta: float) -> None:
-        self.c, self.gap, self.gamma, self.theta_guess = c, gap, gamma, theta
+    def __init__(self, c: float, gap: float, gamma: float, theta: float, compliance: float) -> None:
+        self.c, self.gap, self.gamma, self.theta_guess, self.compliance = c, gap, gamma, theta, compliance
 
     @cached_property
     def solved(self) -> SingularField:
-        """The level-0 field (Newton in theta from the table's theta)."""
+        """The tabulated level-0 field where the field table holds (c, gamma), else the level-0 solve (Newton in
+        theta from the table's theta)."""
+        read = tabulated_field(self.c, self.gap, self.gamma, self.compliance)
+        if read is not None:
+            return read
         return SingularField(solve_given_c(self.c, self.gap, self.gamma, self.theta_guess, RESOLUTIONS[0]))
 
     def pressure(self, x: np.ndarray) -> np.ndarray:
@@ -77,7 +86,9 @@ class TableRoute:
 
     def __init__(self, nu: float | None, gamma: float, c: float | None, mu: float | None) -> None:
         self.nu, self.gamma, self.given_c = nu, gamma, c is not None
-        self._values: TableValues = table_given_c(c, gamma) if c is not None else table_given_mu(mu, gamma)
+        wanted = ("compliance",)  # the route reports mu, c and P*; the sphere's and cone's constants are not read
+        self._values: TableValues = (table_given_c(c, gamma, quantities=wanted) if c is not None
+                                     else table_given_mu(mu, gamma, quantities=wanted))
         self.errors = table_errors()
 
     @property
@@ -105,8 +116,10 @@ class TableRoute:
         v = self._values
         mu, c, gap = float(v.mu[0]), float(v.c[0]), float(v.gap[0])
         theta = 0.5 * math.pi if math.isinf(mu) else math.atan(mu * self.gamma)
+        compliance = float(v.values["compliance"][0])
+        fields = "tabulated" if any(piece.holds(c, self.gamma) for piece in field_table_pieces()) else "computed"
         return FlatPunchSolution(
-            nu=self.nu, gamma=self.gamma, mu=mu, c=c, compliance=float(v.values["compliance"][0]), _error=self.error(),
+            nu=self.nu, gamma=self.gamma, mu=mu, c=c, compliance=compliance, _error=self.error(),
             route=f"table (mu, c, P* to {self.error():.1g}) with level-0 stresses (to {FIELD_ERROR:g} of max(1, p)) "
-                  "computed on first use",
-            breakpoints=graded_breakpoints(c), _field=DeferredField(c, gap, self.gamma, theta))
+                  f"{fields} on first use",
+            breakpoints=graded_breakpoints(c), _field=DeferredField(c, gap, self.gamma, theta, compliance))

@@ -4,7 +4,8 @@ On each piece of c (``PIECES``) the level-0 eigensolution on the mapped layout (
 solved at Chebyshev points of the first kind in (logit c, gamma), gamma in (0, gamma_max) (Newton in theta
 from the whole-plane table's theta), and its stored vector (theta, the basis exponent, the coefficients of P, Q,
 R and u* at the slip collocation points, ``numeric.core.field_table.stored_vector``) is turned into Chebyshev
-coefficients. The interpolant is then checked at held-out random points of each piece and at its corners and edge midpoints (approached to 1e-3 of the edge): p, q relative to max(1, |p|)
+coefficients. The interpolant is then checked at held-out random points of each piece (gamma from ``numeric.core.field_table.GAMMA_MIN`` up, where the table is read) and at its corners and
+edge midpoints (the edges themselves: every point of the rectangle is read): p, q relative to max(1, |p|)
 and u absolute at ten x from 0 to 1 - 1e-5 (x = c included), against the mapped layout's own solve there
 ("interpolation") and against level 4 ("fields"). The worst of each is recorded in the generated module
 (``ERRORS``) and checked by ``tests/test_field_table.py``.
@@ -43,14 +44,15 @@ LEVEL = 0
 #: end than the mapped layout needs at its large end); the sliver (0.7071, 0.70711) around 1/sqrt(2) left out; every
 #: piece below mu gamma = 1 (from c = 0.82 at gamma = 3/4 up, the stick pressure's singular family is pinned: the
 #: discretisation changes there, and a piece across it converged to 1e-2 only), hence gamma <= 0.65 above c = 0.8
-#: (mu gamma = 0.82 at c = 0.9, gamma = 0.65). Sizes (10, 16): the interpolation then stays below ~1e-7, far
-#: below level 0's own error ((8, 12) reached 1e-5).
+#: (mu gamma = 0.82 at c = 0.9, gamma = 0.65). Sizes (10, 16): the interpolation then stays below ~4e-7, far
+#: below level 0's own error ((8, 12) reached 1e-5); 24 points in gamma on (0.70711, 0.8), whose corner c = 0.8,
+#: gamma = 3/4 (mu gamma = 0.945) lies next to mu gamma = 1 (2e-6 there with 16).
 PIECES = (
     (0.05, 0.1, 0.05, 0.75, 10, 16),
     (0.1, 0.2, 0.1, 0.75, 10, 16),
     (0.2, 0.4, 0.2, 0.75, 10, 16),
     (0.4, 0.7071, 0.4, 0.75, 10, 16),
-    (0.70711, 0.8, 0.8, 0.75, 10, 16),
+    (0.70711, 0.8, 0.8, 0.75, 10, 24),
     (0.8, 0.9, 0.9, 0.65, 10, 16),
 )
 QUICK_SIZES = (4, 5)
@@ -144,12 +146,13 @@ def check(pieces: list[field_table.FieldPiece], n_check: int, rng: np.random.Gen
     """Worst interpolation and field errors at held-out points of every piece (the table in use)."""
     errors = {"interpolation": 0.0, "fields": 0.0}
     where: dict[str, tuple] = {}
-    edge = (-0.999, 0.0, 0.999)
+    edge = (-1.0, 0.0, 1.0)
     points = [(p, float(t), float(v)) for p in pieces for t, v in rng.uniform(-1.0, 1.0, (n_check, 2))]
     points += [(p, t, v) for p in pieces for t in edge for v in edge]
     for piece, t, v in tracked(points, len(points), "check", unit="point"):
         c, gap = c_and_gap(piece, t)
-        gamma = 0.5 * (v + 1.0) * piece.gamma_max
+        # gamma over [GAMMA_MIN, gamma_max], where the table is read
+        gamma = field_table.GAMMA_MIN + 0.5 * (v + 1.0) * (piece.gamma_max - field_table.GAMMA_MIN)
         x = check_points(c, gap)
         read = field_table.tabulated_field(c, gap, gamma, math.nan)
         if read is None:

@@ -17,7 +17,7 @@ import numeric.core.field_table_data as data
 from numeric import flat_punch
 from numeric.core.charts import EDGE, RESOLUTIONS, STICK_END, layout
 from numeric.core.eigenvalue import solve_given_c, solve_on_operators
-from numeric.core.field_table import (field_table_errors, field_table_pieces, piece_reference, tabulated_field,
+from numeric.core.field_table import (GAMMA_MIN, field_table_errors, field_table_pieces, piece_reference, tabulated_field,
                                       use_field_table_data)
 from numeric.core.fields import SingularField, TabulatedField
 from numeric.core.layout_map import mapped_layout
@@ -79,7 +79,8 @@ def test_a_tabulated_field_of_a_solution_s_own_values_is_that_solution_s_field()
 def test_the_build_s_recorded_errors_are_below_the_route_s_field_error():
     errors = field_table_errors()
     assert errors == data.ERRORS
-    assert errors["fields"] <= FIELD_ERROR / 10 and errors["interpolation"] <= errors["fields"] * 1.01 + 1e-9
+    # the route's bound on the level-0 fields holds with a margin of ten, the interpolation included
+    assert errors["fields"] <= FIELD_ERROR / 10 and errors["interpolation"] <= FIELD_ERROR / 10
 
 
 def check_points(c: float) -> np.ndarray:
@@ -93,7 +94,7 @@ def test_new_points_of_each_piece_meet_the_recorded_error_against_level_4(k):
     rng = np.random.default_rng(100 + k)  # not the build's seed
     for _ in range(2):
         c = float(np.exp(rng.uniform(np.log(piece.c_lo), np.log(piece.c_hi))))
-        gamma = float(rng.uniform(0.0, piece.gamma_max))
+        gamma = float(rng.uniform(GAMMA_MIN, piece.gamma_max))
         read = tabulated_field(c, 1.0 - c, gamma, math.nan)
         ref = solver_given_c(None, c, gamma, 4)
         x = check_points(c)
@@ -106,10 +107,11 @@ def test_new_points_of_each_piece_meet_the_recorded_error_against_level_4(k):
         assert read.mu == pytest.approx(float(table_given_c(c, gamma, quantities=()).mu[0]), rel=1e-7)
 
 
-def test_small_gamma_keeps_the_shear_s_relative_accuracy():
-    # theta ~ gamma^2 mu/gamma and the stick shear ~ gamma are stored scaled: at gamma = 1e-4 theta was 38 % off
-    # and q 1e-3 of its size before; now q relative to its own size, against the mapped layout's solve
-    c, gamma = 0.5, 1e-4
+def test_small_gamma_keeps_the_relative_accuracy_of_theta_the_shear_and_the_slip():
+    # theta ~ gamma^2 mu/gamma, the stick shear and u* ~ gamma are stored scaled (stored as they were, theta was 38 %
+    # off at gamma = 1e-4): q and u relative to their own size, against the mapped layout's solve, at the least gamma
+    # the table is read at
+    c, gamma = 0.5, GAMMA_MIN
     piece = next(p for p in field_table_pieces() if p.holds(c, gamma))
     read = tabulated_field(c, 1.0 - c, gamma, math.nan)
     lay = mapped_layout(c, 1.0 - c, piece_reference(piece), RES)
@@ -119,11 +121,14 @@ def test_small_gamma_keeps_the_shear_s_relative_accuracy():
     x = np.array([0.2, 0.45, 0.7, 0.95])
     q = solved.shear(x)
     assert np.max(np.abs(read.shear(x) - q) / np.abs(q)) <= 1e-5
+    u = solved.slip(np.array([0.7, 0.95]))
+    assert np.max(np.abs(read.slip(np.array([0.7, 0.95])) - u) / np.abs(u)) <= 1e-5
 
 
 def test_outside_the_pieces_the_route_solves_at_level_0():
     assert tabulated_field(0.02, 0.98, 0.3, 1.0) is None and tabulated_field(0.95, 0.05, 0.3, 1.0) is None
     assert tabulated_field(0.85, 0.15, 0.7, 1.0) is None  # above the piece's gamma_max (mu gamma = 1 near)
+    assert tabulated_field(0.5, 0.5, 0.5 * GAMMA_MIN, 1.0) is None
     inside, outside = flat_punch(nu=0.2, c=0.5, rtol=TABLE_RTOL), flat_punch(nu=0.2, c=0.95, rtol=TABLE_RTOL)
     assert "tabulated" in inside.route and "computed" in outside.route
     theta = math.atan(outside.mu * outside.gamma)
@@ -166,7 +171,7 @@ def test_the_committed_field_table_is_what_the_build_makes_today(tmp_path):
     assert (fresh.LEVEL, fresh.PIECES, fresh.SERIES) == (data.LEVEL, data.PIECES, data.SERIES)
     assert fresh.ERRORS == pytest.approx(data.ERRORS, rel=0.05)
     rng = np.random.default_rng(7)
-    points = [(float(np.exp(rng.uniform(np.log(p.c_lo), np.log(p.c_hi)))), float(rng.uniform(0.0, p.gamma_max)))
+    points = [(float(np.exp(rng.uniform(np.log(p.c_lo), np.log(p.c_hi)))), float(rng.uniform(GAMMA_MIN, p.gamma_max)))
               for p in field_table_pieces() for _ in range(5)]
 
     def fields() -> np.ndarray:

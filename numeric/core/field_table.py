@@ -38,7 +38,7 @@ from numeric.core.fields import TabulatedField
 from numeric.core.layout_map import mapped_layout
 from numeric.core.table import chebyshev_matrix
 
-__all__ = ["FieldPiece", "field_table_available", "field_table_errors", "field_table_pieces", "piece_reference",
+__all__ = ["GAMMA_MIN", "FieldPiece", "field_table_available", "field_table_errors", "field_table_pieces", "piece_reference",
            "piece_coordinates", "stored_vector", "tabulated_field", "use_field_table_data"]
 
 
@@ -56,7 +56,7 @@ class FieldPiece:
     level: int
 
     def holds(self, c: float, gamma: float) -> bool:
-        return self.c_lo <= c <= self.c_hi and 0.0 < gamma <= self.gamma_max
+        return self.c_lo <= c <= self.c_hi and GAMMA_MIN <= gamma <= self.gamma_max
 
 
 def piece_reference(piece: FieldPiece) -> Layout:
@@ -76,6 +76,12 @@ def piece_coordinates(piece: FieldPiece, c: float, gap: float, gamma: float) -> 
     t = 2.0 * (math.log(c) - math.log(gap) - lo) / (hi - lo) - 1.0
     return t, 2.0 * gamma / piece.gamma_max - 1.0
 
+
+#: Below this gamma the field table is not read (the caller solves): as gamma -> 0 the basis exponent alpha ~ gamma^2
+#: tends to 0 and the edge's family of u*, s^(2 alpha), to the constant (at gamma = 1e-8, c = 0.05 the u* interpolation
+#: matrix of the edge element was singular). The rtol = 1e-4 route does not come here below gamma ~ 0.008, where
+#: the asymptotic law meets 1e-4 first (``numeric.solutions.law``).
+GAMMA_MIN = 1e-3
 
 _SOURCE: list = []  # the data module in use: numeric.core.field_table_data, or one given to ``use_field_table_data``
 _LOADING = threading.Lock()  # as numeric.core.table's: concurrent first loads in a sweep's threads
@@ -138,17 +144,18 @@ def field_table_errors() -> dict[str, float]:
 
 def stored_vector(gamma: float, theta: float, alpha: float, coefficients: np.ndarray, u_star: np.ndarray,
                   n_stick: int) -> np.ndarray:
-    """[theta/gamma^2, alpha/gamma^2, P, Q/gamma, R, u* at the slip collocation points]: each analytic in gamma and of
-    its own size as gamma -> 0, where theta = atan(mu gamma) ~ gamma^2 mu/gamma and the stick shear vanishes like
-    gamma (stored as they are, theta was 38 % off at gamma = 1e-4 and q x 1e-3 of its size, the interpolant's error
-    being absolute)."""
+    """[theta/gamma^2, alpha/gamma^2, P, Q/gamma, R, u*/gamma at the slip collocation points]: each analytic in gamma
+    and of its own size as gamma -> 0, where theta = atan(mu gamma) ~ gamma^2 mu/gamma and the stick shear and u*
+    (the slip's source) vanish like gamma (stored as they are, theta was 38 % off at gamma = 1e-4, q and u 1e-3 and
+    5e-4 of their size at 1e-6, the interpolant's error being absolute)."""
     z = np.array(coefficients, dtype=float)
     z[n_stick: 2 * n_stick] /= gamma
-    return np.concatenate([[theta / gamma**2, alpha / gamma**2], z, u_star])
+    return np.concatenate([[theta / gamma**2, alpha / gamma**2], z, np.asarray(u_star) / gamma])
 
 
 def tabulated_field(c: float, gap: float, gamma: float, compliance: float) -> TabulatedField | None:
-    """The tabulated level-0 fields at stick radius c = 1 - gap (None outside the pieces, or without the table);
+    """The tabulated level-0 fields at stick radius c = 1 - gap (None outside the pieces, below ``GAMMA_MIN``, or
+    without the table);
     ``compliance``: P* to report (the caller's, e.g. the whole-plane table's)."""
     if not field_table_available():
         return None
@@ -168,4 +175,5 @@ def tabulated_field(c: float, gap: float, gamma: float, compliance: float) -> Ta
     z = values[2: 2 + n]
     z[ns: 2 * ns] *= gamma
     g2 = gamma * gamma
-    return TabulatedField(lay, gamma, float(values[0]) * g2, float(values[1]) * g2, z, values[2 + n:], compliance)
+    return TabulatedField(lay, gamma, float(values[0]) * g2, float(values[1]) * g2, z, values[2 + n:] * gamma,
+                          compliance)

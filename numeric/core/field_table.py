@@ -44,8 +44,9 @@ __all__ = ["GAMMA_MIN", "FieldPiece", "field_table_available", "field_table_erro
 
 @dataclass(frozen=True, slots=True)
 class FieldPiece:
-    """One rectangle of the field table: c in [c_lo, c_hi] (reference layout at c_ref), gamma in [0, gamma_max];
-    Chebyshev sizes (n_c, n_gamma); the level of the reference layout. The stored vector is ``stored_vector``'s."""
+    """One rectangle of the field table: c in [c_lo, c_hi] (reference layout at c_ref), gamma in [0, gamma_max] (read
+    from ``GAMMA_MIN`` up); Chebyshev sizes (n_c, n_gamma); the level of the reference layout. The stored vector is
+    ``stored_vector``'s."""
 
     c_lo: float
     c_hi: float
@@ -155,8 +156,7 @@ def stored_vector(gamma: float, theta: float, alpha: float, coefficients: np.nda
 
 def tabulated_field(c: float, gap: float, gamma: float, compliance: float) -> TabulatedField | None:
     """The tabulated level-0 fields at stick radius c = 1 - gap (None outside the pieces, below ``GAMMA_MIN``, or
-    without the table);
-    ``compliance``: P* to report (the caller's, e.g. the whole-plane table's)."""
+    without the table); ``compliance``: P* to report (the caller's, e.g. the whole-plane table's)."""
     if not field_table_available():
         return None
     tables = _data()

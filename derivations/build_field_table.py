@@ -4,8 +4,9 @@ On each piece of c (``PIECES``) the level-0 eigensolution on the mapped layout (
 solved at Chebyshev points of the first kind in (logit c, gamma), gamma in (0, gamma_max) (Newton in theta
 from the whole-plane table's theta), and its stored vector (theta, the basis exponent, the coefficients of P, Q,
 R and u* at the slip collocation points, ``numeric.core.field_table.stored_vector``) is turned into Chebyshev
-coefficients. The interpolant is then checked at held-out random points of each piece (gamma from ``numeric.core.field_table.GAMMA_MIN`` up, where the table is read) and at its corners and
-edge midpoints (the edges themselves: every point of the rectangle is read): p, q relative to max(1, |p|)
+coefficients. The interpolant is then checked at held-out random points of each piece (gamma from
+``numeric.core.field_table.GAMMA_MIN`` up, where the table is read) and at its corners and edge midpoints (the edges
+themselves: every point of the rectangle is read): p, q relative to max(1, |p|)
 and u absolute at ten x from 0 to 1 - 1e-5 (x = c included), against the mapped layout's own solve there
 ("interpolation") and against level 4 ("fields"). The worst of each is recorded in the generated module
 (``ERRORS``) and checked by ``tests/test_field_table.py``.
@@ -63,14 +64,6 @@ def chebyshev_points(n: int) -> np.ndarray:
     return np.cos(np.pi * (np.arange(n) + 0.5) / n)
 
 
-def c_and_gap(piece: field_table.FieldPiece, t: float) -> tuple[float, float]:
-    """c and 1 - c at t in [-1, 1] (linear in logit c)."""
-    lo = math.log(piece.c_lo) - math.log1p(-piece.c_lo)
-    hi = math.log(piece.c_hi) - math.log1p(-piece.c_hi)
-    u = lo + 0.5 * (t + 1.0) * (hi - lo)
-    return 1.0 / (1.0 + math.exp(-u)), 1.0 / (1.0 + math.exp(u))
-
-
 def node_field(piece: field_table.FieldPiece, c: float, gap: float, gamma: float) -> SingularField:
     """The level-0 eigensolution on the piece's mapped layout at (c, gamma), Newton from the table's theta."""
     lay = mapped_layout(c, gap, field_table.piece_reference(piece), RESOLUTIONS[piece.level])
@@ -90,7 +83,7 @@ def build_piece(piece: field_table.FieldPiece) -> np.ndarray:
     tc, tg = chebyshev_points(piece.n_c), chebyshev_points(piece.n_gamma)
     values = []
     for t in tracked(tc, tc.size, f"piece c in [{piece.c_lo}, {piece.c_hi}]", unit="row"):
-        c, gap = c_and_gap(piece, float(t))
+        c, gap = field_table.piece_stick_radius(piece, float(t))
         values.append([stored(node_field(piece, c, gap, 0.5 * (float(v) + 1.0) * piece.gamma_max)) for v in tg])
     values = np.array(values)  # (n_c, n_gamma, stored)
     inv_c = np.linalg.inv(chebyshev.chebvander(tc, piece.n_c - 1))
@@ -150,7 +143,7 @@ def check(pieces: list[field_table.FieldPiece], n_check: int, rng: np.random.Gen
     points = [(p, float(t), float(v)) for p in pieces for t, v in rng.uniform(-1.0, 1.0, (n_check, 2))]
     points += [(p, t, v) for p in pieces for t in edge for v in edge]
     for piece, t, v in tracked(points, len(points), "check", unit="point"):
-        c, gap = c_and_gap(piece, t)
+        c, gap = field_table.piece_stick_radius(piece, t)
         # gamma over [GAMMA_MIN, gamma_max], where the table is read
         gamma = field_table.GAMMA_MIN + 0.5 * (v + 1.0) * (piece.gamma_max - field_table.GAMMA_MIN)
         x = check_points(c, gap)

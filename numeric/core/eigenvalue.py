@@ -40,8 +40,9 @@ from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.operators import AbelOperators, CollocationSystem, collocation_system
 
-__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c", "solve_on_operators", "solve_given_theta",
-           "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE", "TANGENT_REACH", "carried_along_tangent"]
+__all__ = ["Eigensolution", "GuidedSolution", "operators_at", "NewtonRoot", "newton_theta", "guided_steps", "solve_given_c",
+           "solve_on_operators", "solve_given_theta", "solve_given_theta_guided", "EigenSystem", "STEP_TOLERANCE",
+           "TANGENT_REACH", "carried_along_tangent"]
 
 HALF_PI = 0.5 * math.pi
 #: The basis exponent is settled when it moves mu gamma = tan(theta) by less than this, relative. (A tolerance

@@ -26,7 +26,6 @@ References
 from __future__ import annotations
 
 import math
-import threading
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -35,11 +34,13 @@ import numpy as np
 
 from numeric.core.charts import RESOLUTIONS, Layout, layout
 from numeric.core.fields import TabulatedField
+from numeric.core.generated_data import GeneratedData
 from numeric.core.layout_map import mapped_layout
 from numeric.core.table import chebyshev_matrix
 
-__all__ = ["GAMMA_MIN", "FieldPiece", "field_table_available", "field_table_errors", "field_table_pieces", "piece_reference",
-           "piece_coordinates", "stored_vector", "tabulated_field", "use_field_table_data"]
+__all__ = ["GAMMA_MIN", "FieldPiece", "field_table_available", "field_table_errors", "field_table_holds",
+           "field_table_pieces", "piece_reference", "piece_coordinates", "piece_stick_radius", "stored_vector",
+           "tabulated_field", "use_field_table_data"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,12 +71,22 @@ def _reference(c_ref: float, level: int) -> Layout:
     return layout(c_ref, 1.0 - c_ref, RESOLUTIONS[level])
 
 
+def _logit_range(piece: FieldPiece) -> tuple[float, float]:
+    return math.log(piece.c_lo) - math.log1p(-piece.c_lo), math.log(piece.c_hi) - math.log1p(-piece.c_hi)
+
+
 def piece_coordinates(piece: FieldPiece, c: float, gap: float, gamma: float) -> tuple[float, float]:
     """(t, v) in [-1, 1]^2: t linear in logit c = log c - log(1 - c), v linear in gamma."""
-    lo = math.log(piece.c_lo) - math.log1p(-piece.c_lo)
-    hi = math.log(piece.c_hi) - math.log1p(-piece.c_hi)
+    lo, hi = _logit_range(piece)
     t = 2.0 * (math.log(c) - math.log(gap) - lo) / (hi - lo) - 1.0
     return t, 2.0 * gamma / piece.gamma_max - 1.0
+
+
+def piece_stick_radius(piece: FieldPiece, t: float) -> tuple[float, float]:
+    """c and 1 - c at t in [-1, 1] (``piece_coordinates``' t), each formed without cancellation."""
+    lo, hi = _logit_range(piece)
+    u = lo + 0.5 * (t + 1.0) * (hi - lo)
+    return 1.0 / (1.0 + math.exp(-u)), 1.0 / (1.0 + math.exp(u))
 
 
 #: Below this gamma the field table is not read (the caller solves): as gamma -> 0 the basis exponent alpha ~ gamma^2
@@ -84,17 +95,6 @@ def piece_coordinates(piece: FieldPiece, c: float, gap: float, gamma: float) -> 
 #: the asymptotic law meets 1e-4 first (``numeric.solutions.law``).
 GAMMA_MIN = 1e-3
 
-_SOURCE: list = []  # the data module in use: numeric.core.field_table_data, or one given to ``use_field_table_data``
-_LOADING = threading.Lock()  # as numeric.core.table's: concurrent first loads in a sweep's threads
-
-
-def use_field_table_data(module) -> None:
-    """Evaluate the tables of ``module`` (a freshly built field_table_data) instead of the committed ones (None:
-    those)."""
-    _SOURCE[:] = [] if module is None else [module]
-    _loaded.cache_clear()
-
-
 @dataclass(frozen=True)
 class _Tables:
     module: object
@@ -102,12 +102,7 @@ class _Tables:
     coefficients: tuple[np.ndarray, ...]  # per piece (n_c, n_gamma, stored)
 
 
-@lru_cache(maxsize=1)
-def _loaded() -> _Tables:
-    if _SOURCE:
-        data = _SOURCE[0]
-    else:
-        from numeric.core import field_table_data as data  # generated; imported on first use only
+def _tables_of(data) -> _Tables:
     values = np.load(Path(data.__file__).with_suffix(".npy"), allow_pickle=False)
     pieces, arrays = [], []
     for spec, (offset, shape) in zip(data.PIECES, data.SERIES):
@@ -118,18 +113,24 @@ def _loaded() -> _Tables:
     return _Tables(data, tuple(pieces), tuple(arrays))
 
 
+#: numeric.core.field_table_data (generated; imported on first use only), or a module given to
+#: ``use_field_table_data``
+_TABLES = GeneratedData("numeric.core.field_table_data", _tables_of)
+
+
+def use_field_table_data(module) -> None:
+    """Evaluate the tables of ``module`` (a freshly built field_table_data) instead of the committed ones (None:
+    those)."""
+    _TABLES.use(module)
+
+
 def _data() -> _Tables:
-    with _LOADING:
-        return _loaded()
+    return _TABLES.get()
 
 
 def field_table_available() -> bool:
     """Whether the generated field table is present (and of this format)."""
-    try:
-        _data()
-    except (ImportError, AttributeError, KeyError, OSError, ValueError, TypeError):
-        return False
-    return True
+    return _TABLES.available()
 
 
 def field_table_pieces() -> tuple[FieldPiece, ...]:
@@ -154,17 +155,26 @@ def stored_vector(gamma: float, theta: float, alpha: float, coefficients: np.nda
     return np.concatenate([[theta / gamma**2, alpha / gamma**2], z, np.asarray(u_star) / gamma])
 
 
-def tabulated_field(c: float, gap: float, gamma: float, compliance: float) -> TabulatedField | None:
-    """The tabulated level-0 fields at stick radius c = 1 - gap (None outside the pieces, below ``GAMMA_MIN``, or
-    without the table); ``compliance``: P* to report (the caller's, e.g. the whole-plane table's)."""
+def _holding(c: float, gamma: float) -> tuple[FieldPiece, np.ndarray] | None:
+    """The first piece holding (c, gamma) and its coefficients (None: none, or no table)."""
     if not field_table_available():
         return None
     tables = _data()
-    for piece, coefficients in zip(tables.pieces, tables.coefficients):
-        if piece.holds(c, gamma):
-            break
-    else:
+    return next(((p, a) for p, a in zip(tables.pieces, tables.coefficients) if p.holds(c, gamma)), None)
+
+
+def field_table_holds(c: float, gamma: float) -> bool:
+    """Whether ``tabulated_field`` answers at (c, gamma)."""
+    return _holding(c, gamma) is not None
+
+
+def tabulated_field(c: float, gap: float, gamma: float, compliance: float) -> TabulatedField | None:
+    """The tabulated level-0 fields at stick radius c = 1 - gap (None outside the pieces, below ``GAMMA_MIN``, or
+    without the table); ``compliance``: P* to report (the caller's, e.g. the whole-plane table's)."""
+    held = _holding(c, gamma)
+    if held is None:
         return None
+    piece, coefficients = held
     t, v = piece_coordinates(piece, c, gap, gamma)
     n_c, n_gamma, stored = coefficients.shape
     row = chebyshev_matrix(np.array([t]), n_c)[0] @ coefficients.reshape(n_c, -1)

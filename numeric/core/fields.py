@@ -25,7 +25,7 @@ import numpy as np
 from numeric.core.charts import (AT_C2, AT_ONE, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, basis_values,
                                  chart_of_offset, collocation_chart, shifted_legendre)
 from numeric.core.eigenvalue import Eigensolution
-from numeric.core.operators import AbelOperators, normal_factor
+from numeric.core.operators import AbelOperators, normal_factor, stick_end_rows
 
 __all__ = ["SingularField", "TabulatedField", "point_offsets"]
 
@@ -265,10 +265,6 @@ class TabulatedField(SingularField):
     def __init__(self, layout: Layout, gamma: float, theta: float, alpha: float, coefficients: np.ndarray,
                  u_star_values: np.ndarray, compliance: float) -> None:
         self.solution = None
-        e = layout.stick_end
-        degree, first = int(layout.degree[e]), int(layout.starts[e])
-        end_row = np.zeros(layout.n_stick)  # the regular family at c-, as ``collocation_system``'s
-        end_row[first: first + degree + 1] = shifted_legendre(degree, np.zeros(1))[0]
-        self._adopt(layout, gamma, theta, alpha, coefficients, end_row)
+        self._adopt(layout, gamma, theta, alpha, coefficients, stick_end_rows(layout)[0])
         self.u_star_values = u_star_values
         self.compliance = compliance

@@ -47,7 +47,7 @@ from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
 __all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
-           "partner_near_rule", "projected_outside_legendre", "self_legendre_block"]
+           "partner_near_rule", "projected_outside_legendre", "self_legendre_block", "stick_end_rows"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -527,6 +527,18 @@ def _singular_weight(theta: float, alpha: float) -> tuple[float, float]:
     return normal_factor(theta) / beta, -math.sin(theta) / beta
 
 
+def stick_end_rows(lay: Layout) -> tuple[np.ndarray, np.ndarray]:
+    """(a, b) over the stick unknowns: a stick field's regular part at c- and its singular family's coefficient there
+    (``CollocationSystem.end_row``, ``end_singular``): the stick end's Legendre values at s = 0, P_k(-1) = (-1)^k."""
+    e = lay.stick_end
+    deg, sdeg, first = int(lay.degree[e]), int(lay.singular_degree[e]), int(lay.starts[e])
+    at_c = shifted_legendre(deg, np.zeros(1))[0]
+    regular, singular = np.zeros(lay.n_stick), np.zeros(lay.n_stick)
+    regular[first: first + deg + 1] = at_c
+    singular[first + deg + 1: int(lay.starts[e + 1])] = at_c[: sdeg + 1]
+    return regular, singular
+
+
 def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> CollocationSystem:
     """Assemble [S75] (2.2a) at every point and (2.2b) at the stick points for basis exponent alpha."""
     lay = ops.layout
@@ -552,7 +564,7 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     rhs = np.zeros(n)
     rhs[:N] = 1.0
     e = lay.stick_end
-    deg, sdeg = int(lay.degree[e]), int(lay.singular_degree[e])
+    deg = int(lay.degree[e])
     singular_slots = np.arange(int(lay.starts[e]) + deg + 1, int(lay.starts[e + 1]))
     if pins_stick_pressure(alpha):
         # P has no singular family on the stick end (``numeric.core.charts``): for beta <= 1/2 its coefficients there are
@@ -560,10 +572,6 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
         # above, h_beta(0) = 0 and the free family does no harm
         rows = int(lay.starts[e]) + pinned_rows(int(lay.n_basis[e]), singular_slots.size)
         pin_to_zero(stick, singular_slots, rows, (normal, shear, rhs), (us_stick,))
-    at_c = shifted_legendre(deg, np.zeros(1))[0]  # P_k(-1) = (-1)^k
-    regular = np.zeros(ns)
-    regular[int(lay.starts[e]): int(lay.starts[e]) + deg + 1] = at_c
-    singular = np.zeros(ns)
-    singular[singular_slots] = at_c[: sdeg + 1]
+    regular, singular = stick_end_rows(lay)
     return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, regular, singular, M.integral.copy(),
                              x, us_stick, -gamma * M.lower[ns:, ns:], xl[:, None] * M.upper_x[ns:, ns:])

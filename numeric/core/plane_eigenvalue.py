@@ -162,8 +162,8 @@ def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolu
     from atan(mu gamma) by its remaining step in c (below 1e-12 in logit c), and the stresses are taken at mu.
 
     As the axisymmetric ``numeric.core.eigenvalue`` does, z moves to theta along Newton's dz/dtheta where theta and
-    Newton's last step are both near enough (``carried_along_tangent``), else by a new solve. The guided solves start Newton at theta itself, so where its first step was its last
-    the move undoes that step and gives the LU's own solution at theta. Measured over 51 given-mu solves (nu from -0.9
+    Newton's last step are both near enough (``carried_along_tangent``), else by a new solve. The guided solves start
+    Newton at theta itself, so where its first step was its last the move undoes that step and gives the LU's own solution at theta. Measured over 51 given-mu solves (nu from -0.9
     to 0.49, c from 0.02 to 0.97) against a new solve at theta: p, q, u at 14 points and the load identical at 49, within
     6e-12 of max(1, |p|) at nu = 0, c = 0.05, and 3.7e-10 at nu = 0.49, c = 0.3, where both lie ~2e-9 from level 3
     (the new solve the farther: q 2.7e-9 against 2.3e-9). One LU of up to 730 unknowns saved a given-mu solve."""

@@ -37,7 +37,6 @@ References
 from __future__ import annotations
 
 import math
-import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
@@ -47,6 +46,8 @@ import numpy as np
 from numpy.polynomial import chebyshev
 
 from asymptotics.largest_stick_radius import largest_stick_radius_gap
+
+from numeric.core.generated_data import GeneratedData
 
 __all__ = ["QUANTITIES", "Region", "Constants", "regions", "box_gap", "u_range", "to_unit", "gap_and_c", "stored_eigen",
            "stored_quantity", "chebyshev_matrix", "coefficients_of", "use_table_data", "table_available", "table_errors", "TableValues",
@@ -173,13 +174,9 @@ def chebyshev_matrix(x: np.ndarray, n: int) -> np.ndarray:
     return np.array(rows, dtype=float).reshape(x.size, n)
 
 
-_SOURCE: list = []  # the data module in use: numeric.core.table_data, or one given to ``use_table_data``
-
-
 def use_table_data(module) -> None:
     """Evaluate the tables of ``module`` (a freshly built table_data) instead of the committed ones (None: those)."""
-    _SOURCE[:] = [] if module is None else [module]
-    _loaded.cache_clear()
+    _TABLES.use(module)
 
 
 @dataclass(frozen=True)
@@ -199,24 +196,7 @@ def coefficients_of(data) -> dict[str, dict[str, list[np.ndarray]]]:
             for name, keys in data.SERIES.items()}
 
 
-#: Threads of a sweep (``numeric.solutions.sweep``, a thread pool or a Dask worker's threads) that first read the
-#: tables at the same moment load them one after the other: concurrent loads did the work twice, and numpy's reading
-#: of the .npy header (``ast.literal_eval``) in two threads at once raised "SystemError: AST constructor recursion
-#: depth mismatch" on CPython 3.11.7 (python/cpython#106905, fixed in 3.11.8) in ``tests/test_dask.py``, 2 of 8 suite runs.
-_LOADING = threading.Lock()
-
-
-def _data() -> _Tables:
-    with _LOADING:
-        return _loaded()
-
-
-@lru_cache(maxsize=1)
-def _loaded() -> _Tables:
-    if _SOURCE:
-        data = _SOURCE[0]
-    else:
-        from numeric.core import table_data as data  # generated; imported on first use only
+def _tables_of(data) -> _Tables:
     constants = Constants(data.C_MIN, data.GAP_MIN, data.GAP_BOX, data.GAP_BOX_RISE, data.GAMMA_MAX)
     found = regions(data.REGIONS)
     coefficients = coefficients_of(data)
@@ -225,13 +205,17 @@ def _loaded() -> _Tables:
     return _Tables(data, constants, found, coefficients, derivatives)
 
 
+#: numeric.core.table_data (generated; imported on first use only), or a module given to ``use_table_data``
+_TABLES = GeneratedData("numeric.core.table_data", _tables_of)
+
+
+def _data() -> _Tables:
+    return _TABLES.get()
+
+
 def table_available() -> bool:
     """Whether the generated table module is present (and of this format)."""
-    try:
-        _data()
-    except (ImportError, AttributeError, KeyError, OSError, ValueError):
-        return False
-    return True
+    return _TABLES.available()
 
 
 def table_errors() -> dict[str, float]:

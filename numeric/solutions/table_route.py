@@ -29,7 +29,7 @@ from asymptotics.largest_stick_radius import largest_stick_radius_gap
 
 from numeric.core.charts import RESOLUTIONS
 from numeric.core.eigenvalue import solve_given_c
-from numeric.core.field_table import field_table_pieces, tabulated_field
+from numeric.core.field_table import field_table_holds, tabulated_field
 from numeric.core.fields import SingularField
 from numeric.core.table import TableValues, table_errors, table_given_c, table_given_mu
 from numeric.solutions.law import graded_breakpoints
@@ -117,7 +117,7 @@ class TableRoute:
         mu, c, gap = float(v.mu[0]), float(v.c[0]), float(v.gap[0])
         theta = 0.5 * math.pi if math.isinf(mu) else math.atan(mu * self.gamma)
         compliance = float(v.values["compliance"][0])
-        fields = "tabulated" if any(piece.holds(c, self.gamma) for piece in field_table_pieces()) else "computed"
+        fields = "tabulated" if field_table_holds(c, self.gamma) else "computed"
         return FlatPunchSolution(
             nu=self.nu, gamma=self.gamma, mu=mu, c=c, compliance=compliance, _error=self.error(),
             route=f"table (mu, c, P* to {self.error():.1g}) with level-0 stresses (to {FIELD_ERROR:g} of max(1, p)) "

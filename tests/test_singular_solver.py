@@ -219,3 +219,25 @@ def test_slip_at_a_point_does_not_depend_on_the_points_asked_with_it(nu, c):
     alone = np.array([s.slip(np.array([v]))[0] for v in x])
     together = np.array([s.slip(np.array([v, 1.0 - 1e-9]))[0] for v in x])
     np.testing.assert_allclose(alone, together, rtol=0.0, atol=1e-14)
+
+
+@pytest.mark.parametrize("c", [0.5, 0.99])
+def test_slip_stays_converged_as_mu_gamma_goes_to_zero(c):
+    # Near nu = 1/2 (mu gamma from 1e-10 down to 1e-24 here) u* at the edge is A(s) + s^(2 alpha) B(s) with alpha ->
+    # 0: its family is carried as (s^(2 alpha) - 1)/(2 alpha) (log s at alpha = 0), since s^(2 alpha) itself falls
+    # onto A's Legendre polynomials (levels 2 and 4 then differed by 8e-3 at 1 - x = 1e-5, nu = 0.4999999, and the
+    # interpolation of u* was singular at nu = 0.499999999).
+    # (i) two discretisations, levels 2 and 4, agree to 1e-11 relative: level 2's slip accuracy at moderate gamma
+    # (9.5e-12 measured at x = (1 + c)/2, c = 0.99, nu = 0.499; 5e-14 here near the edge).
+    # (ii) u/gamma tends to its gamma -> 0 limit like gamma^2 (measured: 9.4e-10 relative between gamma = 2e-5 and
+    # 2e-12 at c = 0.99, gamma^2 = 4e-10); between gamma = 2e-7 and 2e-12 the gamma^2 term is 4e-14, so they agree to
+    # level 2's 1e-11 (measured 8e-14).
+    x = np.array([0.5 * (1.0 + c), 1.0 - 1e-5, 1.0])
+    scaled = []
+    for nu in (0.4999999, 0.5 - 1e-12):
+        default, fine = flat_punch(nu=nu, c=c), flat_punch(nu=nu, c=c, level=4)
+        u = default.slip(x)
+        np.testing.assert_allclose(u, fine.slip(x), rtol=1e-11, atol=0.0)
+        assert np.all(u < 0.0)
+        scaled.append(u / default.gamma)
+    np.testing.assert_allclose(scaled[0], scaled[1], rtol=1e-11, atol=0.0)

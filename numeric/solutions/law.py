@@ -3,8 +3,9 @@ its gamma^2 correction (``asymptotics.second_order``), with error bounds measure
 full solution, and the first-order stresses (2.26), (2.31) that go with it.
 
 Used where the caller's ``rtol`` allows it (``LawRoute.offers``), and below the solver's reach,
-c < 1e-5 (``LawRoute.last_resort``). The bounds are envelopes of measured errors (the Chebyshev
-table and level-2 solves, see the comments); they are not proofs.
+c < 1e-5 (``LawRoute.last_resort``), where it is matched to the table at c = 1e-5 (``hand_over_ratio``) so that
+mu(c) is continuous and increasing across the hand-over. The bounds are envelopes of measured errors (the
+Chebyshev table and level-2 solves, see the comments); they are not proofs.
 
 References
 ----------
@@ -23,6 +24,7 @@ from asymptotics import second_order
 from asymptotics.adhesive import compliance_adhesive
 from asymptotics.first_order import frictionless_pressure, mu_over_gamma, shear_ratio_first_order, stick_radius_first_order
 
+from numeric.core.table import table_least_c, table_least_mu
 from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS
 from numeric.solutions.solution import FlatPunchSolution, Offer, meets, warn_unmet
 
@@ -80,6 +82,33 @@ def law_stick_radius(mu: float, gamma: float, order: int) -> float:
     return float(second_order.stick_radius_second_order(mu, gamma=gamma))
 
 
+def law_friction_coefficient(c: float, gamma: float, order: int) -> float:
+    """mu = gamma f0(c) ((2.28), order 0) or gamma f0(c) (1 + R(c) gamma^2) (order 2)."""
+    f0 = float(mu_over_gamma(c))
+    return gamma * f0 * (1.0 + second_order.correction_ratio(c) * gamma**2 if order == 2 else 1.0)
+
+
+def hand_over_ratio(gamma: float) -> float:
+    """mu/mu_law (second order) at the table's least stick radius C_MIN = 1e-5, where the solver's reach ends too: below
+    it the last-resort law is this multiple of the second-order law, so that mu(c) meets the table there and keeps
+    increasing across (1 where the table does not reach). Measured against level-2 solves below the hand-over (the
+    solver run beyond its reach, ``tests/test_rtol.py``): |mu_matched/mu - 1| = 4.6e-4, 8.8e-4, 1.7e-3 at c = 3e-6,
+    1e-6, 1e-7 for nu = -0.999 (the unmatched law 0.12 throughout), 2.8e-5, 5.5e-5 at c = 3e-6, 1e-6 for nu = 0.3
+    (unmatched 2.1e-3): it grows about linearly in log(1e-5/c). Its stated bound is ``matched_bound``'s."""
+    c0, mu0 = table_least_c(), table_least_mu(gamma)
+    if not (math.isfinite(c0) and math.isfinite(mu0)):
+        return 1.0
+    return mu0 / law_friction_coefficient(c0, gamma, 2)
+
+
+def matched_bound(bound: float, ratio: float) -> float:
+    """Bound of |mu/(ratio mu_law) - 1| and |ratio mu_law/mu - 1| from ``bound`` of |mu/mu_law - 1| (= eps): the
+    matched law's error is (ratio - 1 - eps)/(1 + eps) relative to mu, and (1 + eps - ratio)/ratio relative to itself."""
+    if ratio == 1.0:
+        return bound
+    return (abs(ratio - 1.0) + bound) / min(ratio, 1.0 - bound) if bound < 1.0 else math.inf
+
+
 def law_compliance(c: float, gamma: float, order: int, f0: float) -> tuple[float, float]:
     """P* = 1 + gamma^2 P2 (+ gamma^4 P4 for order 2 and c >= 1e-3) and the bound of its error (f0 = f0(c))."""
     if gamma * gamma * max(1.0, f0) < 1e-17:  # P2 < f0 (P2/f0 = 0.07 ... 0.364 for c = 1 - 1e-6 ... 0): 1 + gamma^2 P2 rounds to 1
@@ -121,10 +150,12 @@ class FirstOrderField:
         return math.inf
 
 
-def route_text(order: int, bound: float, bound_p: float, why: str) -> str:
-    return (f"asymptotic, {LAW_NAMES[order]}: relative error of mu <= {bound:.2g} (measured bound, c <= "
-            f"{ASYMPTOTIC_C_MAX}), of P* <= {bound_p:.2g}; stresses at first order (2.26), (2.31), relative error "
-            f"O(gamma^2); slip displacement not computed ({why})")
+def route_text(order: int, bound: float, bound_p: float, why: str, matched: bool = False) -> str:
+    source = ("the measured bound of the law with its offset from the table at c = 1e-5, to which it is matched"
+              if matched else f"measured bound, c <= {ASYMPTOTIC_C_MAX}")
+    return (f"asymptotic, {LAW_NAMES[order]}: relative error of mu <= {bound:.2g} ({source}), of P* <= "
+            f"{bound_p:.2g}; stresses at first order (2.26), (2.31), relative error O(gamma^2); slip displacement not "
+            f"computed ({why})")
 
 
 @dataclass(frozen=True, slots=True)
@@ -137,14 +168,18 @@ class Bracket:
     bound: float
 
 
-def law_bracket(mu: float, gamma: float, order: int) -> Bracket:
-    c = law_stick_radius(mu, gamma, order)
-    # the true c solves mu_law(c) (1 + e) = mu with |e| <= bound, and mu_law increases with c;
+def law_bracket(mu: float, gamma: float, order: int, ratio: float = 1.0) -> Bracket:
+    """The law's c for given mu (times ``ratio``: ``hand_over_ratio``'s, below the hand-over at c = 1e-5, where the
+    true c lies below it too) and the range the true c lies in."""
+    c = law_stick_radius(mu / ratio, gamma, order)
+    # the true c solves ratio mu_law(c) (1 + e) = mu with |e| <= bound, and mu_law increases with c;
     # the bound is the small-c one only if the whole range lies below 1e-3
     for at in (c, 1.0):
-        bound = law_bound(at, gamma, order)
-        lo = law_stick_radius(mu / (1.0 + bound), gamma, order)
-        hi = law_stick_radius(mu / (1.0 - bound), gamma, order) if bound < 1.0 else 1.0
+        bound = matched_bound(law_bound(at, gamma, order), ratio)
+        lo = law_stick_radius(mu / (ratio * (1.0 + bound)), gamma, order)
+        hi = law_stick_radius(mu / (ratio * (1.0 - bound)), gamma, order) if bound < 1.0 else 1.0
+        if ratio != 1.0:
+            hi = min(hi, table_least_c())
         if hi < second_order.C_MIN or at == 1.0:
             return Bracket(c, lo, hi, bound)
     raise AssertionError  # pragma: no cover
@@ -160,30 +195,32 @@ def graded_breakpoints(c: float) -> np.ndarray:
     return points
 
 
-def asymptotic_given_c(nu: float | None, c: float, gamma: float, order: int, why: str) -> FlatPunchSolution:
-    """The law's mu for given c, with its measured bound as the error (of mu; of P* its own bound)."""
-    f0 = float(mu_over_gamma(c))
-    mu = gamma * f0 * (1.0 + second_order.correction_ratio(c) * gamma**2 if order == 2 else 1.0)
-    bound = law_bound(c, gamma, order)
-    compliance, bound_p = law_compliance(c, gamma, order, f0)
+def asymptotic_given_c(nu: float | None, c: float, gamma: float, order: int, why: str,
+                       ratio: float = 1.0) -> FlatPunchSolution:
+    """The law's mu for given c (times ``ratio``: ``hand_over_ratio``'s below the hand-over), with its measured
+    bound as the error (of mu; of P* its own bound)."""
+    mu = ratio * law_friction_coefficient(c, gamma, order)
+    bound = matched_bound(law_bound(c, gamma, order), ratio)
+    compliance, bound_p = law_compliance(c, gamma, order, float(mu_over_gamma(c)))
     return FlatPunchSolution(nu, gamma, mu, c, compliance, max(bound * mu, bound_p),
-                             route_text(order, bound, bound_p, why), graded_breakpoints(c),
+                             route_text(order, bound, bound_p, why, ratio != 1.0), graded_breakpoints(c),
                              FirstOrderField(c, mu))
 
 
 def asymptotic_given_mu(nu: float | None, mu: float, gamma: float, order: int, bracket: Bracket,
-                        why: str) -> FlatPunchSolution:
-    """The law's c for given mu; error of c from the bracket, of P* its bound plus its change over the bracket."""
-    ratio = 1.0 + (second_order.correction_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
+                        why: str, ratio: float = 1.0) -> FlatPunchSolution:
+    """The law's c for given mu (``bracket``, matched by ``ratio`` below the hand-over); error of c from the bracket,
+    of P* its bound plus its change over the bracket."""
+    f2 = 1.0 + (second_order.correction_ratio(bracket.c) * gamma**2 if order == 2 else 0.0)
     values = [(float(compliance_adhesive(gamma)), 0.0) if c > 0.999 else  # P* <= P0* (B4), P* increases with c
-              law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * ratio))
+              law_compliance(c, gamma, order, float(mu_over_gamma(c)) if c > 0.0 else mu / (gamma * f2 * ratio))
               for c in (bracket.c, bracket.lo, bracket.hi)]
     compliance, bound_p = values[0]
     error_p = bound_p + max(abs(v[0] - compliance) for v in values[1:])
     error_c = max(bracket.hi - bracket.c, bracket.c - bracket.lo)
     return FlatPunchSolution(nu, gamma, mu, bracket.c, compliance, max(error_c, error_p),
                              route_text(order, bracket.bound, bound_p,
-                                        f"so {bracket.lo:.6g} <= c <= {bracket.hi:.6g}; {why}"),
+                                        f"so {bracket.lo:.6g} <= c <= {bracket.hi:.6g}; {why}", ratio != 1.0),
                              graded_breakpoints(bracket.c),
                              FirstOrderField(bracket.c, mu))
 
@@ -243,16 +280,30 @@ class LawRoute:
             return asymptotic_given_c(self.nu, self.c, self.gamma, order, why)
         return asymptotic_given_mu(self.nu, self.mu, self.gamma, order, self._order_bracket(order), why)
 
-    def meets(self, sol: FlatPunchSolution, rtol: float) -> bool:
+    def meets(self, sol: FlatPunchSolution, rtol: float, bracket: Bracket | None = None) -> bool:
         """Whether the law's answer (mu given c, c given mu) meets rtol; an underflowed c whose whole
-        bracket underflowed too counts as met."""
+        bracket (the second-order one unless given) underflowed too counts as met."""
         if self.c is not None:
             return meets(sol, rtol, sol.mu)
-        return meets(sol, rtol, sol.c) or (sol.c == 0.0 and self.bracket.hi == 0.0)
+        return meets(sol, rtol, sol.c) or (sol.c == 0.0 and (bracket or self.bracket).hi == 0.0)
 
     def last_resort(self, rtol: float | None, why: str) -> FlatPunchSolution:
-        """The second-order law, with an ``AccuracyWarning`` if it misses rtol."""
-        sol = self._solve(2, why)
-        if rtol is not None and not self.meets(sol, rtol):
+        """The second-order law, with an ``AccuracyWarning`` if it misses rtol; below the hand-over to the table and
+        the solver at c = 1e-5 matched to the table there (``hand_over_ratio``)."""
+        if self.c is not None:
+            below = self.c < table_least_c()
+        else:
+            below = self.mu < table_least_mu(self.gamma)
+        ratio = hand_over_ratio(self.gamma) if below else 1.0
+        matched = None
+        if ratio == 1.0:
+            sol = self._solve(2, why)
+        elif self.c is not None:
+            sol = asymptotic_given_c(self.nu, self.c, self.gamma, 2, why, ratio)
+        else:
+            matched = law_bracket(self.mu, self.gamma, 2, ratio)
+            sol = asymptotic_given_mu(self.nu, self.mu, self.gamma, 2, matched,
+                                      why, ratio)
+        if rtol is not None and not self.meets(sol, rtol, matched):
             warn_unmet(sol, rtol, sol.mu if self.c is not None else sol.c)
         return sol

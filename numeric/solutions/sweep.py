@@ -26,7 +26,7 @@ from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
 from numeric.core.table import (table_available, table_errors, table_friction_coefficient, table_given_c,
                                 table_least_c, table_stick_radius)
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
-from numeric.solutions.law import LawRoute, law_stick_radius
+from numeric.solutions.law import LawRoute, law_friction_coefficient, law_stick_radius
 from numeric.solutions.progress import Progress, check_progress, progress_bar
 from numeric.solutions.solution import first_meeting
 
@@ -50,14 +50,17 @@ def _solved_c(mu: float, nu: float, level: int | None, rtol: float | None) -> fl
 
 def _below_table(kind: str, a: np.ndarray, g: np.ndarray, missing: np.ndarray) -> np.ndarray:
     """Of the points ``missing``, those below the table's least stick radius (C_MIN = 1e-5), where flat_punch
-    answers by the second-order law: their c from the law directly, without the bracket and the P* it also
-    computes (nan elsewhere). The tables' least mu is read for all of them at once."""
+    answers by the second-order law matched to the table there: their c from that law directly, without the
+    bracket and the P* it also computes (nan elsewhere). The tables' least mu is read for all of them at once."""
     out = np.full(missing.size, np.nan)
     if kind != "c" or not missing.size or not table_available():
         return out
-    least = table_given_c(np.full(missing.size, table_least_c()), g[missing], quantities=()).mu
+    c0 = table_least_c()
+    least = table_given_c(np.full(missing.size, c0), g[missing], quantities=()).mu
     for k in np.flatnonzero((a[missing] > 0.0) & (a[missing] < least)):
-        out[k] = law_stick_radius(float(a[missing[k]]), float(g[missing[k]]), 2)
+        gamma = float(g[missing[k]])
+        ratio = least[k] / law_friction_coefficient(c0, gamma, 2)  # hand_over_ratio, the table read already
+        out[k] = law_stick_radius(float(a[missing[k]]) / ratio, gamma, 2)
     return out
 
 

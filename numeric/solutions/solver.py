@@ -2,7 +2,8 @@
 
 Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is the
 difference between the level and the same problem one polynomial degree lower
-(``numeric.core.charts.partner``; at level 0 ten times it, ``ESTIMATE_SAFETY``), at least ``ERROR_FLOOR`` times
+(``numeric.core.charts.partner``; at level 0, and at level 1 within 10 (1 - c_max) of c_max, ten times it,
+``estimate_safety``), at least ``ERROR_FLOOR`` times
 the value (the rounding level of the eigenvalue condition), a floor that grows like 1/c below c = 2e-3
 (``SMALL_C_ROUNDING``, measured) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the
 level's c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against
@@ -54,7 +55,7 @@ from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, clos
 from numeric.solutions.solution import DeferredError, FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
-           "ESTIMATE_SAFETY", "NEAR_C_MAX", "ROUNDING_ULPS", "SMALL_C_ROUNDING", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
+           "ESTIMATE_SAFETY", "NEAR_ESTIMATE_SAFETY", "NEAR_SAFETY_GAPS", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "SMALL_C_ROUNDING", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
            "nearly_adhesive"]
 
 DEFAULT_LEVEL = 2
@@ -87,6 +88,19 @@ SMALL_C_ROUNDING = 2e-3
 #: to 6.4 times the difference (nu = 0, 1 - c = 1.5 (1 - c_max)), at two points above it; at levels 1-3 never (level 4
 #: is the reference).
 ESTIMATE_SAFETY = (10.0, 1.0, 1.0, 1.0, 1.0)
+#: Level 1 too where 1 - c < NEAR_SAFETY_GAPS (1 - c_max): over 500 random (nu, c) (half with 1 - c from 1.01 to 1000
+#: (1 - c_max)) against level 4 its true error exceeded the difference at 4 of the 65 measurable points there (up to
+#: 1.42 times, nu = 0.04 ... 0.13, 1 - c = 2.5 ... 7 (1 - c_max)), and a fuzz campaign found 4.2 times at nu = 0.095,
+#: 1 - c = 3.1 (1 - c_max); farther out at most 0.42 of it (73 points), and level 2 at most 0.35 of its own anywhere.
+NEAR_SAFETY_GAPS = 10.0
+NEAR_ESTIMATE_SAFETY = (10.0, 10.0, 1.0, 1.0, 1.0)
+
+
+def estimate_safety(level: int, gap: float, gamma: float) -> float:
+    """The factor on the partner difference at this level and 1 - c (``ESTIMATE_SAFETY``, ``NEAR_ESTIMATE_SAFETY``)."""
+    if gamma > 0.0 and gap < NEAR_SAFETY_GAPS * float(largest_stick_radius_gap(gamma)):
+        return NEAR_ESTIMATE_SAFETY[level]
+    return ESTIMATE_SAFETY[level]
 #: Typical relative accuracy of each level (the worst measured, ``RESOLUTIONS``); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {0: 1e-7, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}
 #: Rough run time in seconds of a solve with its error estimate (derivations/benchmark.md), for ordering routes.
@@ -96,8 +110,8 @@ LEVEL_SECONDS = {0: 0.008, 1: 0.010, 2: 0.016, 3: 0.025, 4: 0.04}
 def from_field(nu: float | None, field: SingularField, level: int, error: float | DeferredError,
                mu: float | None = None) -> FlatPunchSolution:
     """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu); ``error`` is
-    the partner difference, times the level's ``ESTIMATE_SAFETY``."""
-    factor = ESTIMATE_SAFETY[level]
+    the partner difference, times the level's ``estimate_safety``."""
+    factor = estimate_safety(level, field.gap, field.gamma)
     if factor != 1.0:
         error = factor * error if isinstance(error, float) else DeferredError(lambda e=error: factor * e.value())
     return FlatPunchSolution(

@@ -55,7 +55,24 @@ def test_fields_at_the_stick_slip_boundary_are_finite_for_huge_mu():
     x = np.array([np.nextafter(s.c, 0.0), s.c, np.nextafter(s.c, 2.0)])
     p, q = s.pressure(x), s.shear(x)
     assert np.all(np.isfinite(p)) and np.all(np.isfinite(q))
-    assert p[1] == p[2] == 0.0 and q[1] == pytest.approx(q[2], rel=1e-6)  # the slip side: no pressure
+    assert q[1] == pytest.approx(q[2], rel=1e-6)
+    # the slip side: p = q/mu (~1e-298), q = mu p as the product to rounding
+    assert p[1] == p[2] and np.allclose(1e300 * p[1:], q[1:], rtol=4e-16, atol=0.0)
+
+
+@pytest.mark.parametrize("nu", [0.0, -0.5])
+def test_annulus_pressure_keeps_its_relative_accuracy_at_huge_mu(nu):
+    # p = R cos(theta) on the slip annulus, cos(theta) = 1/hypot(1, mu gamma) from mu (``SingularField.with_friction``):
+    # from theta = atan(mu gamma) it carried theta's rounding over pi/2 - theta (relative 1e-16 mu gamma: 1e-6 at
+    # mu = 1e10; from mu gamma = 1e16 on p was 0 while q was not). Against the slip limit (mu = inf, q = R/gamma on the
+    # annulus), mu p agrees with its q to 1e-9 at mu = 1e10 (the approach c_max - c ~ A/(mu gamma) and level 2's error
+    # next to c_max: measured 3.7e-10) and to 4 ulps from mu = 1e17 on (the same limit system: measured <= 1 ulp)
+    limit = slip_limit(nu)
+    x = np.array([0.5 * (1.0 + limit.c), 1.0 - 0.3 * (1.0 - limit.c), 1.0 - 1e-3 * (1.0 - limit.c)])
+    for mu, rtol in ((1e10, 1e-9), (1e17, 1e-15), (1e300, 1e-15)):
+        s = flat_punch(nu=nu, mu=mu)
+        np.testing.assert_allclose(mu * s.pressure(x), limit.shear(x), rtol=rtol, atol=0.0)
+        np.testing.assert_allclose(s.shear(x), mu * s.pressure(x), rtol=4e-16, atol=0.0)
 
 
 # ---------------------------------------------------------------- 2. c at c_max

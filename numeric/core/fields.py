@@ -80,10 +80,26 @@ class SingularField:
         ns = layout.n_stick
         self._P, self._Q, self._R = coefficients[:ns], coefficients[ns:2 * ns], coefficients[2 * ns:]
         self._end_row = end_row
+        self._friction: float | None = None  # mu where it is known better than tan(theta)/gamma (``with_friction``)
+        self._normal = normal_factor(theta)  # cos(theta): p = R cos(theta) on the slip annulus
 
     @property
     def mu(self) -> float:
+        if self._friction is not None:
+            return self._friction
         return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
+
+    def with_friction(self, mu: float) -> "SingularField":
+        """The same solution for the friction mu it was solved at (theta = atan(mu gamma)), with cos(theta) =
+        1/hypot(1, mu gamma) from mu itself: from theta it carries theta's rounding over pi/2 - theta, relative 1e-16
+        mu gamma (1e-6 at mu gamma = 1e10; at mu gamma >= 1e16 theta is pi/2 and p on the annulus was 0 where q was
+        not). The stresses on the slip annulus use it; nothing else changes."""
+        out = object.__new__(type(self))
+        out.__dict__.update(self.__dict__)
+        out._kept = {}
+        out._friction = mu
+        out._normal = 1.0 / math.hypot(1.0, mu * self.gamma)
+        return out
 
     @cached_property
     def breakpoints(self) -> np.ndarray:
@@ -190,7 +206,7 @@ class SingularField:
         stick = x < self.layout.c
         out = np.empty(x.shape)
         out[stick] = self._evaluate(x[stick], STICK, self._P)
-        out[~stick] = normal_factor(self.theta) * self._evaluate(x[~stick], SLIP, self._R)
+        out[~stick] = self._normal * self._evaluate(x[~stick], SLIP, self._R)
         at_c = x == self.c
         if at_c.any() and self._pressure_at_c is not None:
             out[at_c] = self._pressure_at_c
@@ -204,7 +220,7 @@ class SingularField:
         out[stick] = x[stick] * self._evaluate(x[stick], STICK, self._Q)
         slip = self._evaluate(x[~stick], SLIP, self._R)
         # q = mu p (2.6b) as the product, so that it holds to the last bit; R/gamma at mu = inf
-        out[~stick] = (self.mu * (normal_factor(self.theta) * slip) if self.theta < 0.5 * math.pi
+        out[~stick] = (self.mu * (self._normal * slip) if self.mu < math.inf
                        else slip / self.gamma)
         at_c = x == self.c
         if at_c.any() and self._pressure_at_c is not None:  # q(c) = mu p(c), p(c) from the stick side

@@ -112,12 +112,14 @@ def from_field(nu: float | None, field: SingularField, level: int, error: float 
     """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu); ``error`` is
     the partner difference, times the level's ``estimate_safety``."""
     factor = estimate_safety(level, field.gap, field.gamma)
+    if mu is not None:  # solved at theta = atan(mu gamma): cos(theta) from mu itself (``SingularField.with_friction``)
+        field = field.with_friction(mu)
     if factor != 1.0:
         error = factor * error if isinstance(error, float) else DeferredError(lambda e=error: factor * e.value())
     return FlatPunchSolution(
         nu=nu,
         gamma=field.gamma,
-        mu=field.mu if mu is None else mu,
+        mu=field.mu,
         c=field.c,
         compliance=field.compliance,
         _error=error,

@@ -47,7 +47,8 @@ from .arrays import scalar_or_array
 from .materials import check_c, check_gamma, check_mu, check_nu, check_x
 
 __all__ = ["gamma_plane_stress", "bonded_index", "mu_over_gamma_plane", "mu_over_gamma_plane_mp",
-           "stick_width_first_order", "stick_width_first_order_mp", "c_small_mu_plane", "gap_large_mu_plane",
+           "stick_width_first_order", "slip_width_first_order",
+           "stick_width_first_order_mp", "c_small_mu_plane", "gap_large_mu_plane",
            "pressure_sadowsky", "pressure_full_slip", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction", "EXACT_RELATION"]
 
 _THETA_TERMS = 12
@@ -139,7 +140,8 @@ def stick_width_first_order(mu: ArrayLike, gamma: ArrayLike) -> np.ndarray | flo
     """
     mu_arr = check_mu(mu)
     g = check_gamma(gamma)
-    ratio = np.divide(g, mu_arr, out=np.full(np.broadcast(mu_arr, g).shape, np.inf), where=mu_arr > 0.0)  # K'/K
+    with np.errstate(over="ignore"):  # mu subnormal: K'/K beyond the doubles, c = 0
+        ratio = np.divide(g, mu_arr, out=np.full(np.broadcast(mu_arr, g).shape, np.inf), where=mu_arr > 0.0)  # K'/K
     out = np.empty(ratio.shape)
     direct = ratio >= 1.0
     with np.errstate(over="ignore", under="ignore"):
@@ -150,6 +152,34 @@ def stick_width_first_order(mu: ArrayLike, gamma: ArrayLike) -> np.ndarray | flo
         theta3 = 1.0 + 2.0 * np.sum(qp[..., None] ** (n**2), axis=-1)
         theta4 = 1.0 + 2.0 * np.sum((-1.0) ** n * qp[..., None] ** (n**2), axis=-1)
         out[inv] = (theta4 / theta3) ** 2
+    return scalar_or_array(out)
+
+
+def slip_width_first_order(mu: ArrayLike, gamma: ArrayLike) -> np.ndarray | float:
+    """1 - c of ``stick_width_first_order``, without the cancellation of forming it from c as c -> 1: where
+    mu/gamma > 1, (theta_3^2 - theta_4^2)/theta_3^2 at q' = exp(-pi mu/gamma), with theta_3 - theta_4 =
+    4 (q' + q'^9 + ...) and theta_3 + theta_4 = 2 (1 + 2 q'^4 + 2 q'^16 + ...); 8 exp(-pi mu/gamma) to leading order
+    (``gap_large_mu_plane``), 0 where that underflows.
+
+    >>> f"{float(slip_width_first_order(10.0, 0.5)):.6e}"   # 8 q' (1 - 4 q' + ...), q' = exp(-20 pi)
+    '4.126320e-27'
+    """
+    mu_arr = check_mu(mu)
+    g = check_gamma(gamma)
+    with np.errstate(over="ignore"):  # gamma subnormal: K/K' beyond the doubles, 1 - c = 0
+        ratio = np.divide(mu_arr, g, out=np.full(np.broadcast(mu_arr, g).shape, np.inf), where=g > 0.0)  # K/K'
+    out = np.empty(ratio.shape)
+    near = ratio > 1.0
+    with np.errstate(over="ignore", under="ignore"):
+        out[~near] = 1.0 - np.asarray(stick_width_first_order(np.broadcast_to(mu_arr, ratio.shape)[~near],
+                                                              np.broadcast_to(g, ratio.shape)[~near]), dtype=float)
+        qp = np.exp(-math.pi * ratio[near])[..., None]
+        n = np.arange(1, _THETA_TERMS)
+        odd, even = n[n % 2 == 1], n[n % 2 == 0]
+        difference = 4.0 * np.sum(qp ** (odd**2), axis=-1)
+        total = 2.0 + 4.0 * np.sum(qp ** (even**2), axis=-1)
+        theta3 = 1.0 + 2.0 * np.sum(qp ** (n**2), axis=-1)
+        out[near] = difference * total / theta3**2
     return scalar_or_array(out)
 
 

@@ -751,3 +751,180 @@ def test_the_cylinder_slip_with_friction():
     assert h.slip(1.0) == 0.0
     with pytest.raises(NotImplementedError):
         plane.power_law(2, nu=0.3, mu=0.01).slip(0.5)  # the law route below c = 1e-5 does not compute the slip
+
+
+def test_the_slip_limit_beyond_the_solvers_reach_is_the_small_gamma_form():
+    # Where 1 - c_max < 2^-40 (gamma < ~0.157) the limit problem is not solved: largest_stick_radius(0.45) took 30 s,
+    # 0.47 149 s and 1.6 GB, 0.49 > 900 s, and 0.499 raised "math domain error" (1 - c_max underflowed in the start).
+    # Now the closed form: c = 1 - (1 - c_max) with 1 - c_max from the limit problem's small-gamma form
+    # (numeric.core.plane_guess.gap_max_small_gamma) and its error bound, the bonded punch's stresses, no layout.
+    from numeric.core.plane_guess import gap_max_small_gamma
+    from numeric.solutions.plane_solver import FULL_STICK_GAP
+    for nu in (0.41, 0.45, 0.47, 0.49, 0.499, 0.4999999, 0.5):
+        s = plane.slip_limit(nu)
+        assert s.route.startswith("limit mu -> inf") and not hasattr(s.field, "n_unknowns")
+        assert s.gap == gap_max_small_gamma(s.gamma) < FULL_STICK_GAP and s.c == 1.0 - s.gap and s.mu == math.inf
+        assert 0.0 <= s.error <= 3e-3 * s.gap and plane.largest_stick_radius(nu) == s.c  # expm1(2e-5/atanh(gamma))
+    assert plane.largest_stick_radius(0.499) == 1.0 and plane.slip_limit(0.4999999).c == 1.0
+
+
+def test_the_small_gamma_form_of_c_max_meets_the_solver_and_the_table():
+    # The hand-over: at gamma = 0.157 (1 - c_max = 9.2e-13, just above 2^-40) the limit problem is solved (1720
+    # unknowns at level 2, the most the route meets: the count grows as 1 - c_max falls, bounded here by the switch);
+    # the form there within its stated error of the solve (measured 3.2e-9 relative, stated 1.3e-4), so no jump where
+    # the closed form takes over, just below. The table's series (level-2 solves, 0.16 ... 0.75, built separately) is
+    # met within the form's error at 0.16, 0.2 and 0.3 (measured 2.4e-9, 5.8e-8, 1.5e-8 relative; stated
+    # 1.2e-4 ... 6.5e-5).
+    from numeric.core.plane_guess import gap_max, gap_max_relative_error, gap_max_small_gamma
+    solved = plane.slip_limit(gamma=0.157)
+    assert solved.route.startswith("limit mu -> inf (slip zones") and solved.field.n_unknowns <= 1720
+    form = gap_max_small_gamma(0.157)
+    assert abs(form - solved.gap) <= form * gap_max_relative_error(0.157) + solved.error
+    below = plane.slip_limit(gamma=0.1565)
+    assert below.route.startswith("limit mu -> inf: 1 - c_max") and below.gap < solved.gap
+    for g in (0.16, 0.2, 0.3):
+        assert abs(gap_max_small_gamma(g) / gap_max(g) - 1.0) <= gap_max_relative_error(g)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("g", [0.13, 0.14, 0.15])
+def test_the_small_gamma_form_of_c_max_meets_the_limit_problem_below_the_table(g):
+    # The form against the limit problem solved at level 3 below the table's band (three of the 13 gamma it was fitted
+    # to; 4-6 s each): measured within 3.4e-8 relative in 1 - c_max; bound: the form's stated error (1.3e-4 ... 1.5e-4)
+    from numeric.core.plane_guess import gap_max_relative_error, gap_max_small_gamma
+    from numeric.solutions.plane_solver import solve_limit
+    solved = solve_limit(g, 3)
+    assert abs(gap_max_small_gamma(g) / solved.gap_limit - 1.0) <= gap_max_relative_error(g)
+
+
+def test_a_stick_width_at_c_max_to_rounding_is_the_slip_limit():
+    # nu = 0.49, c = 1 - 2^-53: c_max = 1 - 1.7e-108 is 1 to rounding, and c lies within 4 ulp of it: the answer is
+    # the slip limit, mu = inf, as the axisymmetric numeric.flat_punch gives (it took 14 s and raised
+    # NoEigenvalueError "at gamma = 0.14", a gamma of the small-gamma series' nodes, not 0.0196)
+    import numeric
+    c = 0.9999999999999999
+    for nu in (0.49, 0.4898, 0.499, 0.4999999, 0.5 - 1e-12):
+        s = plane.flat_punch(nu=nu, c=c)
+        assert s.mu == math.inf and s.route.startswith(f"c = {c!r} is c_max to rounding")
+        assert s.c == plane.slip_limit(nu).c
+    assert numeric.flat_punch(nu=0.49, c=c).mu == math.inf
+    # farther from c_max than rounding: a finite mu (the solver at gamma itself, see test_plane_small_gamma)
+    assert math.isfinite(plane.flat_punch(nu=0.49, c=1 - 1e-15).mu)
+    # above c_max, the error names the problem's gamma
+    with pytest.raises(NoEigenvalueError, match="gamma = 0.15:"):
+        plane.flat_punch(gamma=0.15, c=1 - 1e-14)  # 1 - c_max = 2.1e-13 there
+
+
+def test_level_is_validated_as_the_axisymmetric_api_does():
+    # level=3.0 and np.int64(3) were refused ("must be an integer from 0 to 4, got np.int64(3)"); the plane API takes
+    # the axisymmetric check (numeric.solutions.flat_punch.check_level), over the same number of levels
+    from numeric.core.charts import RESOLUTIONS
+    from numeric.solutions.plane_solver import PLANE_LEVELS
+    assert len(PLANE_LEVELS) == len(RESOLUTIONS)
+    ref = plane.flat_punch(nu=0.3, mu=0.3, level=3).c
+    assert plane.flat_punch(nu=0.3, mu=0.3, level=3.0).c == ref
+    assert plane.stick_radius(0.3, 0.3, level=np.int64(3)) == ref
+    assert plane.slip_limit(0.3, level=np.int64(2)).c == plane.slip_limit(0.3).c
+    with pytest.raises(ValueError, match="level"):
+        plane.flat_punch(nu=0.3, mu=0.3, level=2.5)
+    with pytest.raises(TypeError, match="level"):
+        plane.flat_punch(nu=0.3, mu=0.3, level="2")
+
+
+def test_nu_and_gamma_and_x_are_validated_as_flat_punch_does():
+    # stick_radius(mu, nu, gamma=...) silently took gamma; gamma="0.2" was taken; stick_radius(0.3) said "nu must be a
+    # real number ..., got None"; pressure(True) was inf where the axisymmetric solution raises TypeError
+    with pytest.raises(ValueError, match="exactly one of nu"):
+        plane.stick_radius(0.3, 0.3, gamma=0.2)
+    with pytest.raises(ValueError, match="exactly one of nu"):
+        plane.stick_radius(0.3)
+    with pytest.raises(ValueError, match="exactly one of nu"):
+        plane.friction_coefficient(0.5)
+    with pytest.raises(TypeError, match="gamma"):
+        plane.stick_radius(0.3, gamma="0.2")
+    with pytest.raises(ValueError, match="gamma"):
+        plane.stick_radius(0.3, gamma=0.8)
+    s = plane.flat_punch(nu=0.3, mu=0.3)
+    for f in (s.pressure, s.shear, s.slip, plane.power_law(2, nu=0.3, mu=0.3).pressure):
+        with pytest.raises(TypeError, match="x must be"):
+            f(True)
+        with pytest.raises(TypeError, match="x must be"):
+            f([True, False])
+
+
+def test_the_law_routes_refusal_at_the_centre_says_what_it_gives():
+    # flat_punch(nu=0.3, mu=1e-300).pressure(0) said "x = 0 lies within 100 c ... c = 0 ... at |x| >= 0 only"
+    s = plane.flat_punch(nu=0.3, mu=1e-300)
+    assert s.c == 0.0
+    with pytest.raises(ValueError, match=r"x != 0 only \(c underflows to 0") as raised:
+        s.pressure(0.0)
+    assert "|x| >= 0" not in str(raised.value)
+    small = plane.flat_punch(nu=0.3, mu=0.01)
+    with pytest.raises(ValueError, match=r"\|x\| >= .* \(100 c\) only"):
+        small.pressure(0.5 * small.c)
+
+
+@pytest.mark.parametrize("n", [1e-3, 0.5, 1.0, 1.5, 2.0, 3.0, 10.0, 100.0])
+def test_power_law_stresses_are_right_down_to_the_centre(n):
+    # (3.13) on Sadowsky's punch against mpmath (30 digits, in s = log(t/x): p = n int_0^log(1/x) e^((1-n)s) p0(x e^s)
+    # ds, smooth but for the edge's square root at the top, a tanh-sinh end; split at log(1/x) - 1): the quadrature's
+    # weight t^-n overflowed below x = exp(-709/n) (NaN at x = 1e-3 for n = 100) and the rule did not resolve x below
+    # ~1e-16 (p(1e-100) = 2e-35 for n = 2, against 0.6366); now the weights as (x_ref/t)^n and, below x = 1e-12, the
+    # values there carried to x by the centre's behaviour (PlanePowerLawSolution._near_centre). Measured 1e-16 ...
+    # 2e-13 relative (n = 100: the weight's exp(n log(x_ref/t)) rounding); bound 1e-12
+    def reference(x):
+        with mpmath.workdps(30):
+            x = mpmath.mpf(x)
+            top = -mpmath.log(x)
+
+            def integrand(v):
+                t = x * mpmath.exp(v)
+                return mpmath.exp((1 - n) * v) / (mpmath.pi * mpmath.sqrt((1 - t) * (1 + t)))
+            return float(n * mpmath.quad(integrand, [0, max(top - 1, 0), top]))
+    h = plane.power_law(n, nu=0.3, mu=0.0)
+    x = np.array([1e-300, 1e-100, 1e-20, 1e-12 * (1 - 1e-9), 1e-12, 1e-8, 1e-2, 0.6])
+    got = h.pressure(x)
+    want = np.array([reference(v) for v in x])
+    assert np.all(np.abs(got / want - 1.0) <= 1e-12)
+    # with friction (the solver's field): finite, continuous where the centre's form takes over
+    f = plane.power_law(n, nu=0.3, mu=0.3)
+    below, at = f.pressure(np.array([np.nextafter(1e-12, 0.0), 1e-12]))
+    assert np.all(np.isfinite(f.pressure(x))) and np.all(np.isfinite(f.shear(x))) and abs(below / at - 1) < 1e-12
+
+
+def test_power_law_exponent_range_is_the_axisymmetric_one():
+    # n = 1000 gave pressure NaN; n = 1e300 with mu = inf a load ratio of -1.24: refused beyond numeric.power_law's
+    # N_RANGE (1e-300 ... 100), with the same reason
+    from numeric.solutions.power_law import N_RANGE
+    for n in (100.0000001, 1000, 1e300):
+        with pytest.raises(ValueError, match="n \\(power-law exponent\\) must lie in"):
+            plane.power_law(n, nu=0.3, mu=0.3)
+    for n in N_RANGE:
+        h = plane.power_law(n, nu=0.3, mu=math.inf)
+        assert math.isfinite(h.load_ratio) and h.load_ratio > 0.0
+
+
+@pytest.mark.parametrize("gap", [1e-13, 1e-14, 1e-15])
+def test_the_slip_is_finite_on_a_slip_zone_of_a_few_ulp(gap):
+    # nu = 0.45, 1 - c <= 1e-13 (c_max = 1 - 1e-22 there): u was NaN. The slip zone holds elements of ~20 ulp of x; the
+    # nodes next to their ends were moved by 1e-13 (beyond x = 1) and the owner of a node was found from the rounded
+    # x. Now from x - 1 (exact). Against the same strain integrated by the rule graded fully toward both ends
+    # (SLIP_PIECES each), the nodes placed by their exact offsets: measured 3e-16 ... 5.6e-14 relative; bound 1e-12 (the
+    # graded rules' own agreement at ordinary c is 1e-13 of |u|, test above, here on a |u| of 1e-9); and u(1)
+    # inward, |u(1)|/sqrt(1 - c) = 0.041, 0.045, 0.050 continuing the trend of 1 - c = 1e-10 ... 1e-12 (0.034, 0.036,
+    # 0.038: +0.003 ... +0.005 a decade), checked loosely: between 0.03 and 0.06
+    s = plane.flat_punch(nu=0.45, c=1 - gap)
+    f = s.field
+    fracs = (1.0, 0.3, 0.7)  # not at element ends (0.25, 0.5, 0.75 of the zone), where the reference would need them
+    x = np.array([f.c + frac * f.gap if frac < 1.0 else 1.0 for frac in fracs])
+    u = s.slip(x)
+    assert np.all(np.isfinite(u)) and np.all(u < 0.0)
+    nodes, one_minus, w = graded_both_ends()
+    full = []
+    for v in x:  # x as the double it is (it rounds by up to 1e-3 of a 1e-13 zone): x - c and x - 1 are exact
+        length = v - f.c
+        from_one = (v - 1.0) - length * one_minus
+        t = np.maximum(f.c + length * nodes, np.nextafter(f.c, 2.0))
+        full.append(f.strain(t, from_one) @ w * length)
+    assert np.max(np.abs(u - np.array(full)) / np.abs(u)) <= 1e-12
+    assert 0.03 < -u[0] / math.sqrt(f.gap) < 0.06

@@ -68,3 +68,34 @@ def test_command_line(capsys):
     assert cli.main(["cylinder", "--radius", "0.005", "--load-per-length", "-1", "--E", "70e9", "--nu", "0.22",
                      "--mu", "0.3"]) == 2
     assert "load" in capsys.readouterr().err
+
+
+def test_extreme_moduli_give_a_finite_answer_or_a_clear_error():
+    # E = 1.8e308 made pi M overflow and Hertz's half-width 0 (ZeroDivisionError; the CLI printed a traceback): the
+    # half-widths now from logarithms where the product leaves the doubles, checked against the plane-strain Hertz
+    # a = sqrt(4 R P/(pi E*)) formed in logarithms by hand (to 1e-13: exp/log rounding over |log a| = 352)
+    huge = elastic(E=1.7976931348623157e308, nu=0.3)
+    c = press_cylinder(0.005, huge, mu=0.3, load=1e5)
+    e_star = 2.0 * huge.G / (1.0 - huge.nu)
+    a_hertz = math.exp(0.5 * (math.log(4 * 0.005 * 1e5) - math.log(math.pi) - math.log(e_star)))
+    assert c.frictionless_half_width == pytest.approx(a_hertz, rel=1e-13)
+    assert math.isfinite(c.half_width) and c.half_width > 0.0 and math.isfinite(c.max_pressure)
+    assert cli.main(["cylinder", "--radius", "0.005", "--load-per-length", "1e5", "--E", "1.7976931348623157e308",
+                     "--nu", "0.3", "--mu", "0.3"]) == 0
+    with pytest.raises(ValueError, match="half-width"):
+        press_cylinder(1e300, elastic(E=1e-300, nu=0.3), mu=0.3, load=1e300)
+    # gamma_bar = 2.9e-28 (a soft indenter on nu -> -1): full stick at once (it took 8 s, then SolverError)
+    soft = press_cylinder(0.005, elastic(E=70e9, nu=-0.9999999), mu=0.3, load=1e5,
+                          indenter=elastic(E=1e-10, nu=0.5))
+    assert soft.route.startswith("full stick") and soft.c > 1 - 1e-12
+
+
+def test_where_the_stresses_are_not_computed_the_calculator_says_so():
+    # nu = 0.4999 (gamma = 2e-4), mu = 1.5e-3: 1 - c = 4.7e-10, below the small-gamma series' reach and at gamma below
+    # 1e-3, where the strip punch's stresses are not computed (NotImplementedError): the strip's centre pressure and
+    # slip are None, and the cylinder, whose half-width needs the pressure, raises ValueError (the CLI prints it)
+    body = elastic(E=70e9, nu=0.4999)
+    strip = press_strip(0.005, body, mu=1.5e-3, load=1e5)
+    assert strip.route.startswith("near full stick") and strip.centre_pressure is None and strip.slip_edge is None
+    with pytest.raises(ValueError, match="not computed"):
+        press_cylinder(0.005, body, mu=1.5e-3, load=1e5)

@@ -2,7 +2,9 @@
 
 The series is checked against the solver where the solver is good (gamma = 0.03, level 3), against itself through
 nodes solved at another level (a convergence study: level 3 against level 2), and in the route: taken below
-SMALL_GAMMA only, inverted given mu, its stresses those of the solver at c.
+SMALL_GAMMA only, inverted given mu; its stresses (the nodes' fields interpolated) against the solver's limit
+gamma -> 0 from direct solves at gamma = 0.02 ... 0.04. Near c = 1 and for tiny gamma given mu: the first-order law
+(a closed form) with its measured O(gamma^2) bound, and the hand-overs at c = 1e-5 and 1 - c = SERIES_GAP_MIN.
 """
 
 import math
@@ -12,7 +14,7 @@ import pytest
 
 from numeric import plane
 from numeric.solutions.plane_small_gamma import SMALL_GAMMA, gamma_series, small_gamma_friction
-from numeric.solutions.plane_solver import solve_given_c
+from numeric.solutions.plane_solver import C_SMALLEST, solve_given_c
 
 
 @pytest.mark.parametrize("c", [0.05, 0.5, 0.97])
@@ -53,7 +55,8 @@ def test_the_series_leading_coefficient_is_the_solvers_slope_at_small_gamma():
 
 def test_the_route_is_taken_below_small_gamma_only_and_inverts_itself():
     # given c below SMALL_GAMMA: the series' mu, its error 1e-10 relative (the floor) here; given that mu, c back to
-    # within the route's error of c (a Newton step from the solver's c); above SMALL_GAMMA the solver's route
+    # within the route's error of c (Newton in logit c on the series from the first-order law's c); above SMALL_GAMMA
+    # the solver's route
     g = 0.5 * SMALL_GAMMA
     s = plane.flat_punch(gamma=g, c=0.5)
     assert s.route.startswith("small-gamma series") and s.error <= 2e-10 * s.mu
@@ -63,18 +66,143 @@ def test_the_route_is_taken_below_small_gamma_only_and_inverts_itself():
     assert plane.flat_punch(gamma=1.2 * SMALL_GAMMA, c=0.5).route.startswith("solver")
 
 
-def test_the_routes_stresses_are_the_solvers_at_c():
-    # the stresses are those of the solver's solve at c, at its own eigenvalue (off it the generic mode would enter
-    # at x = c): p everywhere and q on the stick zone as the solver has them, and on the slip zones q = mu p for the
-    # series' mu to the last bit (the solver's own q/p is its own mu, within its error of the series')
-    g = 0.5 * SMALL_GAMMA
+def _solver_trend(c: float, x: np.ndarray) -> np.ndarray:
+    """p, q/gamma, u/gamma at x as quadratics in gamma^2 (rows: coefficients) through level-3 solves at gamma = 0.02,
+    0.03, 0.04 (direct solves, none of them a node of the series; there the solver's q/gamma is good to ~1e-9)."""
+    gs = (0.02, 0.03, 0.04)
+    rows = []
+    for g in gs:
+        f = solve_given_c(c, 1 - c, g, 3).field
+        p, q = f.pressure_shear(x)
+        rows.append(np.concatenate([p, q / g, f.slip(x) / g]))
+    return np.linalg.solve(np.vander([g * g for g in gs], 3, increasing=True), np.array(rows))
+
+
+@pytest.mark.parametrize("nu, c", [(0.499999999, 0.5), (0.5 - 1e-12, 0.9)])
+def test_the_stresses_stay_right_as_gamma_goes_to_zero(nu, c):
+    # The solver at gamma itself put q/(mu p) = 1.1e4 in the stick zone at nu = 0.499999999, c = 0.5 (Coulomb needs
+    # <= 1), q(0.1) < 0 and u(0.75)/gamma = -1319 (-0.0385 at nu = 0.49999), with mu's error 1.6e-19; at nu = 0.5 - 1e-12,
+    # c = 0.9 u(0.99) > 0 and q(0.9) < 0. The route's p, q/gamma, u/gamma (the series through the nodes' fields) against
+    # the solver's limit gamma -> 0 (_solver_trend): measured within 1.1e-10, 5.6e-10, 4.9e-11 (c = 0.5) and 6.2e-10,
+    # 1.1e-8, 6.8e-10 (c = 0.9) of the largest value; bound 5e-8: the reference's own uncertainty next to x = c (the
+    # limits through gamma = 0.01 ... 0.03 and 0.02 ... 0.04 differ there by 1.2e-7 at c = 0.5), not tighter
+    s = plane.flat_punch(nu=nu, c=c)
+    g = s.gamma
+    assert s.route.startswith("small-gamma series")
+    x = np.array([0.0, 0.3 * c, c * (1 - 1e-3), c, c + 1e-3 * (1 - c), 0.5 * (1 + c), 1 - 0.01 * (1 - c), -0.5 * c])
+    got = np.concatenate([s.pressure(x), s.shear(x) / g, s.slip(x) / g])
+    ref = _solver_trend(c, x)[0]
+    n = x.size
+    for k in range(3):
+        part = slice(k * n, (k + 1) * n)
+        assert np.max(np.abs(got[part] - ref[part])) <= 5e-8 * np.max(np.abs(ref[part]))
+    # Coulomb in the stick zone, the signs: shear outward for x > 0, slip inward
+    stick = np.linspace(0.01, 0.99, 50) * c
+    assert np.all(np.abs(s.shear(stick)) <= s.mu * s.pressure(stick))
+    assert np.all(s.shear(stick) > 0.0)
+    slipping = c + (1 - c) * np.array([0.1, 0.5, 0.9, 0.99])
+    assert np.all(s.slip(slipping) < 0.0) and np.all(np.diff(s.slip(slipping)) < 0.0)
+    # q = mu p on the slip zones, as the product (one rounding)
+    assert np.all(s.shear(slipping) == s.mu * s.pressure(slipping))
+
+
+def test_the_stresses_hand_over_to_the_solver_at_small_gamma():
+    # either side of SMALL_GAMMA (0.019: the series' fields; 0.021: the default level's own) against the level-3 trend
+    # in gamma^2 (_solver_trend) at that gamma: measured p, q/gamma, u/gamma within 2.4e-10, 5.4e-9, 1.3e-10 (0.019)
+    # and 4.3e-11, 1.0e-8, 2.8e-10 (0.021, next to x = c: the default level's own error there) of the largest value
+    # at c = 0.5; bound 5e-8 (as below), so the fields do not jump where the route changes
     c = 0.5
-    s = plane.flat_punch(gamma=g, c=c)
-    direct = solve_given_c(c, 1 - c, g, 2).field
-    x = np.array([0.0, 0.5 * c, c, 0.5 * (1 + c), 1 - 1e-5])
-    p, q = s.pressure(x), s.shear(x)
-    pd, qd = direct.pressure_shear(x)
-    assert np.array_equal(p, pd) and np.array_equal(q[:3], qd[:3])
-    assert np.all(q[3:] == s.mu * p[3:])
-    assert abs(qd[3] / pd[3] - s.mu) <= solve_given_c(c, 1 - c, g, 2).error.value() + s.error
-    assert math.isfinite(float(s.slip(0.75)))
+    x = np.array([0.0, 0.25, 0.5, 0.5 + 1e-4, 0.75, 0.99])
+    trend = _solver_trend(c, x)
+    n = x.size
+    for g, route in ((0.019, "small-gamma"), (0.021, "solver")):
+        s = plane.flat_punch(gamma=g, c=c)
+        assert s.route.startswith(route)
+        got = np.concatenate([s.pressure(x), s.shear(x) / g, s.slip(x) / g])
+        expected = trend[0] + trend[1] * g**2 + trend[2] * g**4
+        for k in range(3):
+            part = slice(k * n, (k + 1) * n)
+            assert np.max(np.abs(got[part] - expected[part])) <= 5e-8 * np.max(np.abs(expected[part])), (g, k)
+
+
+@pytest.mark.parametrize("gamma", [1e-16, 1e-20, 1e-28, 1e-100, 1.9999557565557572e-12])  # the last nu = 0.499999999999
+def test_tiny_gamma_given_mu_is_full_stick_at_once(gamma):
+    # mu = 0.3 at gamma -> 0: the first-order law tan(theta) = gamma^2 K(c)/K'(c) puts 1 - c = 8 exp(-pi mu/gamma) = 0
+    # (closed form), below FULL_STICK_GAP: full stick, as numeric.flat_punch(gamma=1e-20, mu=0.3) answers c = 1. The
+    # solver at gamma itself raised SolverError after 5-9 s (gamma = 1e-16, 1e-28, 1e-100) or NoEigenvalueError after
+    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 1.7e-4)
+    from asymptotics.plane import slip_width_first_order
+    from numeric.solutions.plane_solver import FULL_STICK_GAP
+    for mu in (0.3, 1e-8):
+        s = plane.flat_punch(gamma=gamma, mu=mu)
+        assert slip_width_first_order(mu, gamma) < FULL_STICK_GAP
+        assert s.route.startswith("full stick") and s.gap <= s.error and 1.0 - s.c < FULL_STICK_GAP
+        assert not hasattr(s.field, "n_unknowns")  # the bonded punch's closed form, no layout
+
+
+def test_tiny_gamma_small_mu_is_the_first_order_law():
+    # nu = 0.499999999999 (gamma = 2e-12), mu = 2e-13: c ~ 6e-7, below the solver's smallest; the law's fit used the
+    # solver at gamma itself, whose r = (mu/mu_1 - 1)/gamma^2 was rounding over gamma^2 (~1e11), and brentq found no
+    # bracket (ValueError "f(a) and f(b) must have different signs"). Now r from the series: at gamma = 2e-12 the law
+    # is the first-order law to gamma^2 r ~ 1e-24, so c is the inverse of K(c)/K'(c) = mu/gamma (the closed form)
+    # to rounding (bound 1e-12 relative); its stated error is the floor of mu's, 1e-10, times L = log(4/c) = 15.7
+    from asymptotics.plane import stick_width_first_order
+    s = plane.flat_punch(nu=0.499999999999, mu=2e-13)
+    assert s.route.startswith("law")
+    assert s.c == pytest.approx(float(stick_width_first_order(2e-13, s.gamma)), rel=1e-12)
+    assert s.error <= 1e-10 * math.log(4 / s.c) * s.c * (1 + 1e-6)
+
+
+def test_near_full_stick_at_small_gamma():
+    # 1 - c below SERIES_GAP_MIN at gamma < SMALL_GAMMA: nu = 0.49, c = 1 - 1e-14 took 8 s and raised
+    # NoEigenvalueError naming a node's gamma (0.16: c lies above that gamma's c_max); now the solver at gamma itself,
+    # and at nu = 0.4999999 (gamma = 2e-7 < FIRST_ORDER_GAMMA) the first-order law, whose relative error in mu is at
+    # most FIRST_ORDER_R_MAX gamma^2 (r = 40.3 at 1 - c = 1e-14, measured with the solver). Checked: the solver's mu
+    # against the first-order law (a closed form) within that bound, and the law's mu is the closed form itself
+    from numeric.core.plane_guess import elliptic_ratio
+    from numeric.solutions.plane_solver import FIRST_ORDER_R_MAX
+    c = 1 - 1e-14
+    gap = 1 - c  # exact
+    s = plane.flat_punch(nu=0.49, c=c)
+    first = s.gamma / elliptic_ratio(c, gap)
+    assert s.route.startswith("near full stick") and "solver level 2" in s.route
+    assert 0.0 < s.mu / first - 1.0 <= FIRST_ORDER_R_MAX * s.gamma**2
+    assert s.error <= 1e-9 * s.mu  # the solver's estimate, theta's rounding included (measured 6.7e-10 relative)
+    assert np.isfinite(s.shear(0.999)) and s.slip(1.0) < 0.0
+    tiny = plane.flat_punch(nu=0.4999999, c=c)
+    assert tiny.mu == tiny.gamma / elliptic_ratio(c, gap)
+    assert tiny.error == pytest.approx(FIRST_ORDER_R_MAX * tiny.gamma**2 * tiny.mu, rel=1e-15)
+    with pytest.raises(NotImplementedError, match="not computed"):
+        tiny.shear(0.5)
+    back = plane.flat_punch(nu=0.4999999, mu=tiny.mu)
+    assert abs(back.c - tiny.c) <= back.error
+
+
+@pytest.mark.parametrize("nu", [0.2, 0.3, 0.4, 0.44, 0.45, 0.49, 0.4999999])
+def test_mu_increases_through_the_hand_over_to_the_law(nu):
+    # at c = 1e-5 the law (below) hands over to the solver or the series (above): friction_coefficient([9.99999e-6,
+    # 1e-5], 0.4999999) was [2.4501e-8, 2.4355e-8] (the law's fit from the solver at gamma = 2e-7 itself, 5 % off) and
+    # the round trip stick_radius(friction_coefficient(1e-5)) 64 % off; at nu = 0.49 mu(1e-5) given back raised
+    # "c = 9.99999994e-06 is below 1e-05", and at nu = 0.2, 0.44 (0.4) mu(1e-5) given back found no bracket in the law
+    # (the secant from the first-order law did not converge: the table's theta lies 5e-10 beyond mu(1e-5)'s). Now mu(c)
+    # increases across the hand-over like the first-order law: mu(1e-5)
+    # - mu(1e-5 (1 - h)) = h mu / L (d log F0 / d log c = 1/L, L = log(4/c) = 12.9) at h = 1e-6, to its O(gamma^2)
+    # part (measured 0.0101 ... 0.0122 gamma^2: r's slope in log c) and the values' rounding over their difference
+    # (4.2e-7 at nu = 0.4999999, the difference being 7.8e-8 of mu); bound 0.02 gamma^2 + 1e-6; and the round trip
+    # holds to the stated error of c
+    c = C_SMALLEST
+    h = 1e-6
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    below, at = plane.friction_coefficient([c * (1 - h), c], nu)
+    assert below < at
+    assert abs((at - below) / at / (h / math.log(4 / c)) - 1.0) <= 0.02 * g * g + 1e-6
+    back = plane.flat_punch(nu=nu, mu=at)
+    assert abs(back.c - c) <= back.error + plane.flat_punch(nu=nu, c=c).error / (at / (c * math.log(4 / c)))
+
+
+def test_the_smallest_friction_gives_no_stick_zone():
+    # mu = 5e-324 (the smallest double): the law's 1/log(4/c) underflowed to 0 and c = 4 exp(-1/y) raised
+    # ZeroDivisionError; c = 4 exp(-pi gamma/(2 mu)) is 0 in doubles (closed form), and so is its error
+    for nu in (-0.999, 0.3, 0.499):
+        s = plane.flat_punch(nu=nu, mu=5e-324)
+        assert s.c == 0.0 and s.error == 0.0 and s.route.startswith("law")

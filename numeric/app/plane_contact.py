@@ -21,15 +21,17 @@ References
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import optimize
 
 from numeric.app.contact import Elastic, MaterialPair, positive
+from numeric.core.plane_fields import FieldCombination
 from numeric.solutions.plane_law import FullSlipField
-from numeric.solutions.plane_near_limit import NearLimitField
 from numeric.solutions.plane_power_law import plane_power_law
+from numeric.solutions.plane_small_gamma import UnresolvedField
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
 
@@ -46,7 +48,9 @@ class LineContact:
     inside the slip zones (``PlanePowerLawSolution.slip``). The strip's pressure and
     shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there. Below the solver's smallest stick
     half-width (c < 1e-5, small mu: ``numeric.solutions.plane_law``) the values that depend on the neighbourhood of
-    the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None."""
+    the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None; so
+    are the strip's where the stresses are not computed (1 - c < 1e-8 at gamma_bar < 1e-3), where the cylinder's
+    half-width, which needs them, raises ValueError."""
 
     shape: str
     size: float
@@ -102,6 +106,19 @@ def _maximum(f, c: float) -> tuple[float, float]:
     return float(values[k]), float(x[k])
 
 
+def _half_width(K: float, R: float, P: float, M: float) -> float:
+    """a = sqrt(K R P / M) (m), in logarithms where the product leaves the normal doubles (E = 1.8e308 made
+    pi M overflow and Hertz's a zero: ZeroDivisionError); ValueError where a itself is not a finite double."""
+    direct = K * R * P / M
+    if math.isfinite(direct) and direct >= sys.float_info.min:
+        return math.sqrt(direct)
+    log_a = 0.5 * (math.log(K) + math.log(R) + math.log(P) - math.log(M))
+    if not -708.0 < log_a < 709.0:
+        raise ValueError(f"the contact half-width sqrt(K R P / M) = exp({log_a:.4g}) m is not a finite double: radius "
+                         f"{R!r} m, load {P!r} N/m and the modulus M = {M!r} Pa are out of scale")
+    return math.exp(log_a)
+
+
 def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float, indenter: Elastic | None = None,
                    level: int = DEFAULT_LEVEL) -> LineContact:
     """A cylinder of radius R (m) pressed with load per unit length P (N/m): the plane-strain Hertz contact with friction."""
@@ -109,9 +126,11 @@ def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float
     P = positive(load, "load", "load per unit length, N/m")
     pair, g, sign = _pair(half_space, indenter)
     h = plane_power_law(2, gamma=g, mu=mu, level=level)
+    if isinstance(h.flat.field, UnresolvedField):  # the load-width relation needs the pressure
+        raise ValueError(f"{h.flat.field.reason}; the cylinder's half-width needs them (route: {h.flat.route})")
     M = pair.modulus
-    a = math.sqrt(h.load_factor * R * P / M)
-    a_h = math.sqrt(2.0 * R * P / (math.pi * M))
+    a = _half_width(h.load_factor, R, P, M)
+    a_h = _half_width(2.0 / math.pi, R, P, M)
     scale = P / a
     p_h = 2.0 * P / (math.pi * a_h)
     if isinstance(h.flat.field, FullSlipField):  # the maxima lie in the unresolved neighbourhood of the stick zone
@@ -131,7 +150,7 @@ def _largest_slip(h) -> tuple[float, float]:
     stick zone and falls to 0 at the edge, so its largest value lies on [c, 1] (bounded scalar search, to 1e-9 in x;
     from the resolved side where the field leaves the neighbourhood of c unresolved)."""
     lo = h.c
-    if isinstance(h.flat.field, NearLimitField):
+    if isinstance(h.flat.field, FieldCombination) and h.flat.field.unresolved is not None:
         lo = h.flat.field.unresolved[1]
     if h.c >= 1.0 or lo >= 1.0:
         return 0.0, 1.0
@@ -149,7 +168,8 @@ def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: floa
     pair, g, sign = _pair(half_space, indenter)
     s = strip_punch(gamma=g, mu=mu, level=level)
     scale = P / a
-    if isinstance(s.field, FullSlipField):  # p(0) and the slip are not resolved below the solver's smallest c
+    if isinstance(s.field, (FullSlipField, UnresolvedField)):  # p(0) and the slip are not resolved (c < 1e-5; or
+        # 1 - c < 1e-8 at gamma < 1e-3, ``numeric.solutions.plane_small_gamma``)
         centre, slip = None, None
     else:
         centre, slip = scale * float(s.pressure(0.0)), sign * float(s.slip(1.0)) * P / pair.modulus

@@ -229,15 +229,25 @@ def locate(lay: PlaneLayout, x: np.ndarray, side: np.ndarray | None = None, offs
     x = np.asarray(x, dtype=float)
     to_one = x > lay.c + 0.5 * lay.gap
     anchor = np.where(to_one, AT_ONE, AT_C)
-    offset = np.where(to_one, x - 1.0 if offset_from_one is None else offset_from_one, x - lay.c)
-    lo = np.array([lay.x_range(e)[0] for e in range(len(lay))])
+    if offset_from_one is None:
+        offset = np.where(to_one, x - 1.0, x - lay.c)
+        lo = np.array([lay.x_range(e)[0] for e in range(len(lay))])
+        key = x
+    else:  # the owner and both offsets from x - 1 itself: next to the edge x rounds by 1.1e-16, a slip zone of 1e-14
+        # holds elements of ~20 ulp, and the owner by x was off by one at their ends (its chart value clipped to 0)
+        from_one = np.asarray(offset_from_one, dtype=float)
+        # a point above c as a double is on the slip side, whatever rounding put its offset at or below c
+        from_one = np.where(x > lay.c, np.maximum(from_one, np.nextafter(-lay.gap, 0.0)), from_one)
+        offset = np.where(to_one, from_one, from_one + lay.gap)
+        lo = np.where(lay.anchor == AT_ONE, 0.0, -lay.gap) + np.minimum(lay.origin, lay.origin + lay.sigma * lay.length)
+        key = from_one
     order = np.argsort(lo)
-    owner = order[np.clip(np.searchsorted(lo[order], x, side="right") - 1, 0, len(lay) - 1)]
-    at_c = x == lay.c
+    owner = order[np.clip(np.searchsorted(lo[order], key, side="right") - 1, 0, len(lay) - 1)]
+    at_c = x == lay.c if offset_from_one is None else from_one == -lay.gap
     if np.any(at_c):
         slip_side = np.zeros(x.shape, dtype=bool) if side is None else np.broadcast_to(np.asarray(side) == SLIP, x.shape)
         owner[at_c] = np.where(slip_side[at_c], lay.stick_end + 1, lay.stick_end)
-    owner[x >= 1.0] = len(lay) - 1
+    owner[(x >= 1.0) if offset_from_one is None else (from_one >= 0.0)] = len(lay) - 1
     # chart value in the owner: offsets from the owner's anchor
     a_own = lay.anchor[owner]
     rel = offset + np.where(anchor == a_own, 0.0, np.where(a_own == AT_C, lay.gap, -lay.gap))

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
 import numpy as np
@@ -32,7 +33,8 @@ from numeric.core.plane_eigenvalue import PlaneEigensolution
 from numeric.core.plane_operators import PlaneOperators, normal_factor
 from numeric.core.quadrature import christoffel_gauss01, gauss_legendre
 
-__all__ = ["PlaneField", "SLIP_PIECES", "SLIP_NODES", "INNER_POWER", "INNER_NODES", "NODE_CLEARANCE", "graded_both_ends",
+__all__ = ["PlaneField", "FieldCombination", "SLIP_PIECES", "SLIP_NODES", "INNER_POWER", "INNER_NODES", "NODE_CLEARANCE",
+           "CLEARANCE_FRACTION", "graded_both_ends",
            "graded_toward", "pieces_toward", "weighted_tail_integrals", "Weight"]
 
 #: A weight of the tail integrals: weight(t, 1 - t), the second argument exact next to the edge.
@@ -53,7 +55,9 @@ d >= h beyond s = 0 lies at v = (d/h)^(1/16) e^(i pi/16), rho >= 1.85 (1.85^-80 
 h <= 1/4) at v >= 4^(1/16), rho >= 1.81 (2.5e-21). (With v^8 and 24 nodes (1 - s)^-0.4 came out 9e-14 off.) The
 weights are ``christoffel_gauss01``'s: with ``leggauss``'s the rule integrated 1 to 1.2e-14."""
 NODE_CLEARANCE = 1e-13
-"""Least distance of a slip-integral node from an element end inside the slip zone (see ``PlaneField.slip``)."""
+"""Least distance of a slip-integral node from an element end inside the slip zone (see ``PlaneField.slip``), at most
+``CLEARANCE_FRACTION`` of the slip zone 1 - c."""
+CLEARANCE_FRACTION = 1e-10
 
 
 class PlaneField:
@@ -82,26 +86,20 @@ class PlaneField:
         self._q[sys.slip_columns] = (math.sin(self.theta) / self.gamma) * R
         self._starts = solution.operators.starts
         self._last_points: tuple | None = None  # (points, (p, q)) of the last ``pressure_shear``
-        self._friction: float | None = None  # mu where the slip zones' q was set from it (``with_friction``)
 
     @property
     def mu(self) -> float:
-        if self._friction is not None:
-            return self._friction
         return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
 
-    def with_friction(self, mu: float) -> PlaneField:
-        """The same solution with q = mu p on the slip zones for a mu known better than this solution's own (the
-        small-gamma series, ``numeric.solutions.plane_small_gamma``, within this solution's error of it): p and the
-        stick zone's q unchanged; on the slip zones q = mu p (its coefficients, for the slip u, and the values, as the
-        product, to the last bit)."""
+    def detached(self) -> PlaneField:
+        """The same field without its solution (the system, its transforms and LU: 10-30 MB at 200-1200 unknowns),
+        for keeping many (``numeric.solutions.plane_small_gamma``): p, q, the slip and the load stay available,
+        ``solution`` is None."""
         out = PlaneField.__new__(PlaneField)
-        out.__dict__.update({k: v for k, v in self.__dict__.items() if k not in ("_q", "_last_points")})
-        out._q = self._q.copy()
-        cols = self.solution.system.slip_columns
-        out._q[cols] = mu * self._p[cols]
+        out.__dict__.update(self.__dict__)
+        out.__dict__["load"] = self.load
+        out.solution = None
         out._last_points = None
-        out._friction = mu
         return out
 
     @cached_property
@@ -143,9 +141,6 @@ class PlaneField:
         with np.errstate(invalid="ignore"):
             p = B @ self._p
             q = B @ self._q
-        if self._friction is not None:  # q = mu p on the slip zones as the product, to the last bit
-            slip = ax > self.c
-            q[slip] = self._friction * p[slip]
         edge = ax == 1.0
         if np.any(edge):  # (1 - x)^(alpha - 1/2): infinite for mu < inf; at mu = inf p = 0 and q is finite
             p[edge] = 0.0 if self.theta >= 0.5 * math.pi else math.inf
@@ -209,18 +204,25 @@ class PlaneField:
         nodes = lo[:, None] + length[:, None] * s[None, :]
         # t - 1 = (hi - 1) - length (1 - s): exact next to the edge, where t itself rounds to 1
         from_one = hi_minus_one[:, None] - length[:, None] * one_minus_s[None, :]
-        # nodes that round to c go to its slip side; nodes next to an element end inside the slip zone (single
-        # basis functions' transforms are logarithmic there, and where the chart's anchor changes from c to 1 the
-        # chart value of a node a few ulp off the end rounds to the end itself: u came out NaN at x = (1 + c)/2
-        # and at other ends) move to NODE_CLEARANCE from the end on their own side, t - 1 with them (the strain
-        # is smooth across such an end, so the integral moves by ~1e-13 times its weight there)
-        nodes = np.where(nodes == self.c, np.nextafter(self.c, 2.0), nodes)
-        ends = np.unique(np.concatenate([self.layout.x_range(e) for e in range(len(self.layout))]))
-        ends = ends[(ends > self.c) & (ends < 1.0)]
+        # nodes that round to c go to its slip side (as doubles; t - 1, exact, is kept); nodes next to an element end
+        # inside the slip zone (single basis functions' transforms are logarithmic there, and where the chart's anchor
+        # changes from c to 1 the chart value of a node a few ulp off the end rounds to the end itself: u came out NaN
+        # at x = (1 + c)/2 and at other ends) move to the clearance from the end on their own side, t - 1 with them
+        # (the strain is smooth across such an end, so the integral moves by ~1e-13 times its weight there)
+        lay = self.layout
+        nodes = np.where(nodes == self.c, np.nextafter(self.c, 2.0), nodes)  # (t - 1 keeps the node where it is)
+        from_one = np.where(from_one <= -lay.gap, -lay.gap * (1.0 - CLEARANCE_FRACTION), from_one)
+        # the ends as t - 1, exact from the layout's offsets (the doubles t round by 1.1e-16 next to the edge, where a
+        # slip zone of 1e-14 holds several ends: compared as doubles, every node moved by the clearance, beyond t = 1,
+        # and u was NaN for 1 - c <= 1e-13); the clearance at most CLEARANCE_FRACTION of the slip zone
+        base = np.where(lay.anchor == AT_ONE, 0.0, -lay.gap)
+        ends = np.unique(np.concatenate([base + lay.origin, base + lay.origin + lay.sigma * lay.length]))
+        ends = ends[(ends > -lay.gap) & (ends < 0.0)]
+        clearance = min(NODE_CLEARANCE, CLEARANCE_FRACTION * lay.gap)
         if ends.size:
-            nearest = ends[np.abs(nodes[..., None] - ends).argmin(axis=-1)]
-            shift = np.where(nodes >= nearest, NODE_CLEARANCE, -NODE_CLEARANCE) - (nodes - nearest)
-            shift = np.where(np.abs(nodes - nearest) < NODE_CLEARANCE, shift, 0.0)
+            nearest = ends[np.abs(from_one[..., None] - ends).argmin(axis=-1)]
+            shift = np.where(from_one >= nearest, clearance, -clearance) - (from_one - nearest)
+            shift = np.where(np.abs(from_one - nearest) < clearance, shift, 0.0)
             nodes, from_one = nodes + shift, from_one + shift
         values = self.strain(nodes.ravel(), from_one.ravel()).reshape(nodes.shape)
         if weight is not None:
@@ -326,3 +328,67 @@ def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight: Weight) ->
             tp, tq = tp + pp, tq + qq
         out_p.flat[i], out_q.flat[i] = tp, tq
     return out_p, out_q
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class FieldCombination:
+    """p = sum_i p_weights[i] p_i, q = sum_i q_weights[i] q_i and u = sum_i q_weights[i] u_i of solver fields, with
+    Coulomb's law exact on the slip zones |x| > c: ``coulomb`` "q" sets q = mu sgn(x) p there from the combined p,
+    "p" sets p = |q|/mu from the combined q. Where the fields are linear in a parameter (1/(mu gamma) near the limit
+    mu -> inf, ``numeric.solutions.plane_near_limit``; gamma^2 at one c for small gamma,
+    ``numeric.solutions.plane_small_gamma``) this is their interpolation. ``unresolved``: an interval of |x| about c
+    where the combination does not hold (the fields' stick-slip points differ), refused with ValueError (``reason``
+    says why), or None. The weighted integrals of p and q (the cylinder's, ``tail_integrals``) are linear too."""
+
+    fields: tuple[PlaneField, ...]
+    p_weights: tuple[float, ...]
+    q_weights: tuple[float, ...]
+    mu: float
+    c: float
+    gap: float
+    coulomb: str
+    unresolved: tuple[float, float] | None = None
+    reason: str = ""
+
+    def check(self, ax: np.ndarray) -> None:
+        """ValueError if a point |x| lies in ``unresolved``."""
+        if self.unresolved is None:
+            return
+        lo, hi = self.unresolved
+        inside = (ax > lo) & (ax < hi)
+        if np.any(inside):
+            raise ValueError(f"x = {float(ax[inside][0])!r} lies within {hi - self.c:.2g} of the stick-slip point "
+                             f"c = {self.c!r}, {self.reason}")
+
+    def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """p and q at -1 <= x <= 1, combined, and Coulomb's law on the slip zones (``coulomb``)."""
+        x = np.asarray(x, dtype=float)
+        self.check(np.abs(x).ravel())
+        p, q = np.zeros(x.shape), np.zeros(x.shape)
+        edge = np.abs(x) == 1.0  # (1 - x)^(alpha - 1/2): every field (mu < inf) is infinite there, weights of both signs
+        inner = np.where(edge, 0.0, x)
+        for f, wp, wq in zip(self.fields, self.p_weights, self.q_weights):
+            pf, qf = f.pressure_shear(inner)
+            p, q = p + wp * pf, q + wq * qf
+        p, q = np.where(edge, math.inf, p), np.where(edge, np.copysign(math.inf, x), q)
+        slipping = np.abs(x) > self.c
+        if self.coulomb == "p":
+            p = np.where(slipping, np.abs(q) / self.mu, p)
+        else:
+            q = np.where(slipping, self.mu * np.sign(x) * p, q)
+        return p, q
+
+    def slip(self, x: np.ndarray) -> np.ndarray:
+        """u at -1 <= x <= 1, combined (0 on the stick zone)."""
+        x = np.asarray(x, dtype=float)
+        self.check(np.abs(x).ravel())
+        return sum(w * f.slip(x) for f, w in zip(self.fields, self.q_weights))
+
+    def tail_integrals(self, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
+        """``weighted_tail_integrals`` of the combination (linear in the fields; on the slip zones the fields' own q,
+        which the combination matches to its accuracy)."""
+        tp, tq = 0.0, 0.0
+        for f, wp, wq in zip(self.fields, self.p_weights, self.q_weights):
+            fp, fq = weighted_tail_integrals(f, x, weight)
+            tp, tq = tp + wp * fp, tq + wq * fq
+        return tp, tq

@@ -12,6 +12,8 @@ level-2 solves) over three regions, each a rectangle in coordinates in which the
   (the approach to c_max, 1 - c - (1 - c_max) ~ A/(mu gamma), spread out), and gamma. Stored: x tan(theta), finite at
   c_max. 1 - c_max(gamma) is itself a series in gamma, of h = atanh(gamma) log(8/(1 - c_max)) (smooth: 1 - c_max
   falls like exp(-pi/(k eps)), eps = atanh(gamma)/pi), from the limit problem (``numeric.solutions.plane_solver``).
+  Below the band (where 1 - c_max < 1.7e-12) ``gap_max`` continues it by the limit problem's small-gamma form
+  h = pi^2/2 - 2 log 2 gamma - b1 gamma^3 - ... (``gap_max_small_gamma``, fitted to the solves at gamma = 0.13 ... 0.3).
 
 Outside them (c below C_MIN, gamma below GAMMA_N with 1 - c below GAP_N, c above the tabulated c_max) ``theta_guess``
 returns None and the caller starts from the first-order law or the approach to c_max. The worst relative error in mu
@@ -35,16 +37,44 @@ from scipy import special
 
 from numeric.core import plane_guess_data as data
 
-__all__ = ["gap_fit", "elliptic_ratio", "GuessRegion", "REGIONS", "region_of", "coordinate", "gap_and_c",
+__all__ = ["SMALL_GAMMA_GAP_MAX", "SMALL_GAMMA_GAP_MAX_H_ERROR", "gap_max_small_gamma", "gap_max_relative_error",
+           "elliptic_ratio", "GuessRegion", "REGIONS", "region_of", "coordinate", "gap_and_c",
            "stored_value", "theta_from_stored", "u_range", "gap_max", "gap_max_stored", "GAP_MAX_RANGE", "chebyshev_nodes",
            "Guess", "theta_guess", "stick_width_guess"]
 
 
-def gap_fit(gamma: float) -> float:
-    """1 - c_max(gamma), roughly: 8 exp(-pi/(k eps)), eps = atanh(gamma)/pi, k = 1.87 + 0.97 gamma (a fit to the limit
-    problem at nu = 0.1 ... -0.75, 3 % in 1 - c_max there; a factor 2 at gamma = 0.19, 4 at 0.134)."""
-    eps = math.atanh(gamma) / math.pi
-    return 8.0 * math.exp(-math.pi / ((1.87 + 0.97 * gamma) * eps))
+#: h(gamma) = atanh(gamma) log(8 / (1 - c_max)) as gamma -> 0: pi^2/2 - gamma (2 log 2 + b1 gamma^2 + b2 gamma^4 +
+#: b3 gamma^6); these are (2 log 2, b1, b2, b3). Fitted (least squares, b1 ... b3 only) to the limit problem solved at
+#: level 3 (``numeric.solutions.plane_solver.solve_limit``) at 13 gamma from 0.13 to 0.3: residuals in h below 2.2e-8
+#: (level 2 gives the same h to 3.3e-9), 1.4e-8 at gamma = 0.2 left out of the fit; it meets the table's series at
+#: gamma = 0.16 to 2.4e-9 relative in 1 - c_max. pi^2/2 and 2 log 2 are what the solves give, not a proof: a
+#: polynomial in gamma fitted freely (degree 5 and 6, gamma <= 0.25 or 0.3) has h(0) - pi^2/2 = -1.4e-5 ... 4.0e-6,
+#: h'(0) + 2 log 2 = -1.4e-4 ... 4.8e-4 and h''(0) = -6.7e-3 ... 2.0e-3 (h - pi^2/2 is odd in gamma); with h(0) =
+#: pi^2/2 held, the odd fit's h'(0) is -2 log 2 to 3e-8 (gamma <= 0.25) and 4e-7 (<= 0.3). (The axisymmetric relation
+#: has h = pi^2/2 exactly, ``asymptotics.largest_stick_radius``; in the plane 1 - c_max -> 32 exp(-pi^2/(2 atanh
+#: gamma)) as gamma -> 0.)
+SMALL_GAMMA_GAP_MAX = (2.0 * math.log(2.0), 0.21850366, 0.09788115, 0.05657238)
+#: Bound of |h - h_true| for the small-gamma form below the table's band: the free fits' scatter of h(0) about pi^2/2
+#: (1.4e-5 at most), not the residuals (2.2e-8): the relative error of 1 - c_max is taken as expm1(it / atanh(gamma)),
+#: 1.3e-4 where 1 - c_max = 2^-40 (gamma = 0.157), growing to 3e-3 where it underflows (gamma = 0.007).
+SMALL_GAMMA_GAP_MAX_H_ERROR = 2e-5
+
+
+def gap_max_small_gamma(gamma: float) -> float:
+    """1 - c_max(gamma) = 8 exp(-h(gamma)/atanh(gamma)), h = pi^2/2 - gamma (2 log 2 + b1 gamma^2 + ...)
+    (``SMALL_GAMMA_GAP_MAX``): the limit problem's form as gamma -> 0 (0 at gamma = 0; it underflows to 0 below
+    gamma ~ 0.007, where 1 - c_max < 1e-308)."""
+    if gamma == 0.0:
+        return 0.0
+    h = 0.5 * math.pi**2 - gamma * float(np.polynomial.polynomial.polyval(gamma * gamma, SMALL_GAMMA_GAP_MAX))
+    return 8.0 * math.exp(-h / math.atanh(gamma))
+
+
+def gap_max_relative_error(gamma: float) -> float:
+    """The relative error bound of ``gap_max`` below the table's band (the small-gamma form): expm1 of
+    ``SMALL_GAMMA_GAP_MAX_H_ERROR`` / atanh(gamma) (inf at gamma = 0, where 1 - c_max = 0)."""
+    exponent = math.inf if gamma == 0.0 else SMALL_GAMMA_GAP_MAX_H_ERROR / math.atanh(gamma)
+    return math.expm1(exponent) if exponent < 700.0 else math.inf  # (1 - c_max underflows long before)
 
 
 def elliptic_ratio(c: float, gap: float) -> float:
@@ -89,12 +119,14 @@ def _unit(value: float, lo: float, hi: float) -> float:
 
 
 def gap_max(gamma: float) -> float:
-    """1 - c_max(gamma) from its series (GAMMA_N <= gamma <= GAMMA_MAX; nan outside)."""
+    """1 - c_max(gamma) for 0 <= gamma <= GAMMA_MAX: the table's series in its band (GAMMA_N ... GAMMA_MAX, from
+    level-2 solves of the limit problem), the small-gamma form ``gap_max_small_gamma`` below it (and while the table
+    is being built)."""
     g0, g1 = GAP_MAX_RANGE
-    if not g0 <= gamma <= g1:
-        return math.nan
-    h = _series(np.asarray(data.GAP_MAX_SERIES), _unit(gamma, g0, g1))
-    return 8.0 * math.exp(-h / math.atanh(gamma))
+    if g0 <= gamma <= g1 and len(data.GAP_MAX_SERIES):
+        h = _series(np.asarray(data.GAP_MAX_SERIES), _unit(gamma, g0, g1))
+        return 8.0 * math.exp(-h / math.atanh(gamma))
+    return gap_max_small_gamma(gamma)
 
 
 def u_range(region: GuessRegion, gamma: float) -> tuple[float, float]:
@@ -211,29 +243,44 @@ def stick_width_guess(theta: float, gamma: float) -> tuple[float, float, Guess] 
     u on the series, kept in the region's range by bisection); None where the table does not reach."""
     if not 0.0 < gamma <= data.GAMMA_MAX or not 0.0 < theta < 0.5 * math.pi:
         return None
-    for name in ("S", "N") if gamma <= data.GAMMA_N else ("S", "L"):
-        region = REGIONS[name]
-        lo, hi = u_range(region, gamma)
-        if region.coordinate == "log_gap_ratio":
-            lo = 1e-12 * hi  # u = 0 is c_max, the limit mu -> inf
-        a, b = (lo, hi) if region.coordinate == "logit_c" else (hi, lo)  # theta increases from a to b
-        ta, tb = _evaluate(region, a, gamma)[0], _evaluate(region, b, gamma)[0]
-        if not ta <= theta <= tb:
-            continue
-        u = a + (b - a) * (theta - ta) / (tb - ta)
-        for _ in range(60):
-            value, slope = _evaluate(region, u, gamma)[:2]
-            if value < theta:
-                a = u
-            else:
-                b = u
-            new = u + (theta - value) / slope if slope != 0.0 else math.nan
-            if not min(a, b) <= new <= max(a, b):
-                new = 0.5 * (a + b)
-            done = abs(new - u) <= 1e-14 * max(1.0, abs(u))
-            u = new
-            if done:
-                break
-        value, slope, c, gap = _evaluate(region, u, gamma)
-        return c, gap, Guess(value, slope * _du_dxi(region, u, c))
+    names = ("S", "N") if gamma <= data.GAMMA_N else ("S", "L")
+    for slack in (0.0, END_SLACK):  # within a region; else within END_SLACK beyond an end, taken at that end
+        for name in names:
+            found = _in_region(REGIONS[name], theta, gamma, slack)
+            if found is not None:
+                return found
     return None
+
+
+#: theta up to this far (relative) beyond an end of the table is taken at that end: a theta from the solver's mu at the
+#: table's smallest c (the hand-over to the law below c = 1e-5) lies beyond the table's own by its error (5e-10),
+#: where the secant in c from the first-order law (3 % off there) did not converge (nu = 0.4).
+END_SLACK = 1e-6
+
+
+def _in_region(region: GuessRegion, theta: float, gamma: float, slack: float) -> tuple[float, float, Guess] | None:
+    """``stick_width_guess`` in one region; theta within ``slack`` (relative) beyond an end is taken at the end."""
+    lo, hi = u_range(region, gamma)
+    if region.coordinate == "log_gap_ratio":
+        lo = 1e-12 * hi  # u = 0 is c_max, the limit mu -> inf
+    a, b = (lo, hi) if region.coordinate == "logit_c" else (hi, lo)  # theta increases from a to b
+    ta, tb = _evaluate(region, a, gamma)[0], _evaluate(region, b, gamma)[0]
+    if not ta * (1.0 - slack) <= theta <= tb * (1.0 + slack):
+        return None
+    theta = min(max(theta, ta), tb)
+    u = a + (b - a) * (theta - ta) / (tb - ta)
+    for _ in range(60):
+        value, slope = _evaluate(region, u, gamma)[:2]
+        if value < theta:
+            a = u
+        else:
+            b = u
+        new = u + (theta - value) / slope if slope != 0.0 else math.nan
+        if not min(a, b) <= new <= max(a, b):
+            new = 0.5 * (a + b)
+        done = abs(new - u) <= 1e-14 * max(1.0, abs(u))
+        u = new
+        if done:
+            break
+    value, slope, c, gap = _evaluate(region, u, gamma)
+    return c, gap, Guess(value, slope * _du_dxi(region, u, c))

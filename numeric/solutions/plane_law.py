@@ -8,7 +8,9 @@ L = log(4/c) and the first-order law mu_1 = gamma K(c)/K'(c) (= gamma pi/(2 L) t
 The form was found from the solver (``derivations/plane_strain.md``, ``tests/test_plane_law.py``): r changes by halves per decade of c as c -> 0,
 and its change follows 1/L^2 (fitted through c = 1e-3 and 1e-4 it predicts the solver's r at 1e-5 to 2e-7 ...
 5e-5, at 1e-6 and 1e-7, solved directly, to 2e-7 ... 2e-5). a and b are fitted here through the solver at
-``LAW_NODES[1:]`` = 1e-4, 1e-5 (the law is continuous with the solver at 1e-5), once per gamma and level.
+``LAW_NODES[1:]`` = 1e-4, 1e-5 (the law is continuous with the solver at 1e-5), once per gamma and level; below
+``SMALL_GAMMA`` through the small-gamma series' r at those c (``numeric.solutions.plane_small_gamma``), as the solver
+route there takes mu from it.
 Its error: the same fit through ``LAW_NODES[:2]`` = 1e-3, 1e-4 moves the limit a by da; the relative error of
 mu is taken as ``LAW_ERROR_FACTOR`` gamma^2 |da| (measured, against the solver at c = 1e-6 and 1e-7: the actual
 error is 1/3 ... 1/240 of this bound, ``derivations/plane_strain.md``), plus the solver's rounding floor.
@@ -37,6 +39,7 @@ from scipy import optimize
 
 from asymptotics.plane import mu_over_gamma_plane, pressure_full_slip
 
+from numeric.solutions.plane_small_gamma import SMALL_GAMMA, gamma_series, series_nodes
 from numeric.solutions.plane_solver import C_SMALLEST, ROUNDING_FLOOR, solve_given_c
 
 __all__ = ["LAW_NODES", "LAW_ERROR_FACTOR", "OUTER_FACTOR", "LawFit", "law_fit", "law_friction_coefficient",
@@ -69,7 +72,13 @@ class LawFit:
 
 
 def _ratio(c: float, gamma: float, level: int) -> float:
-    """r = (mu/mu_1 - 1)/gamma^2 from the solver at c."""
+    """r = (mu/mu_1 - 1)/gamma^2 from the solver at c; below ``SMALL_GAMMA`` from the small-gamma series, whose
+    correction term it is over F0 (formed without the cancellation of mu/mu_1 - 1: the solver's own mu there carries
+    a rounding that grows like 1/gamma^2, and r took it times 1/gamma^2 more: the law was 5 % off at nu = 0.4999999
+    and its stick width not bracketed at nu = 0.499999999999)."""
+    if gamma < SMALL_GAMMA:
+        series = gamma_series(c, 1.0 - c, level, series_nodes(1.0 - c)[0])
+        return series.correction(gamma) / series.first_order
     mu = solve_given_c(c, 1.0 - c, gamma, level).field.mu
     return (mu / (gamma * float(mu_over_gamma_plane(c))) - 1.0) / gamma**2
 
@@ -111,7 +120,13 @@ def law_stick_width(mu: float, gamma: float, level: int) -> tuple[float, float]:
         return 0.5 * math.pi * y * (1.0 + gamma**2 * (fit.a + fit.b * y * y)) - target
 
     y_top = 1.0 / _log_ratio(C_SMALLEST)
+    if excess(y_top) <= 0.0:
+        # mu is the law's at C_SMALLEST to within K/K' = pi/(2 L)'s relative c^2/(4 L) (2e-12 there) or rounding: the
+        # hand-over point itself (brentq found no bracket: the round trip of c = 1e-5 failed at nu = 0.2, 0.44)
+        return C_SMALLEST, fit.relative_error * _log_ratio(C_SMALLEST) * C_SMALLEST
     y = optimize.brentq(excess, 0.0, y_top, xtol=1e-300, rtol=4.0 * np.finfo(float).eps)
+    if y == 0.0:  # mu/gamma at the bottom of the doubles (mu = 5e-324): L beyond them, c = 0 (it raised ZeroDivisionError)
+        return 0.0, 0.0
     big_l = 1.0 / y
     c = 4.0 * math.exp(-big_l)
     return c, fit.relative_error * big_l * c
@@ -128,10 +143,12 @@ class FullSlipField:
         """ValueError naming x where |x| < OUTER_FACTOR c (the stick zone and its neighbourhood) or x = 0."""
         near = (ax < OUTER_FACTOR * self.c) | (ax == 0.0)
         if np.any(near):
+            where = (f"|x| >= {OUTER_FACTOR * self.c:.3g} ({OUTER_FACTOR:g} c) only" if self.c > 0.0 else
+                     "x != 0 only (c underflows to 0; the full-slip pressure is singular at the centre)")
             raise ValueError(
-                f"x = {float(ax[near][0]):.3g} lies within {OUTER_FACTOR:g} c of the centre: the stick half-width "
-                f"c = {self.c:.3g} is below the solver's smallest ({C_SMALLEST:g}), and this route (full slip away "
-                f"from the stick zone) gives the stresses at |x| >= {OUTER_FACTOR * self.c:.3g} only")
+                f"x = {float(ax[near][0]):.3g} is not resolved: the stick half-width c = {self.c:.3g} is below the "
+                f"solver's smallest ({C_SMALLEST:g}), and this route (full slip away from the stick zone) gives the "
+                f"stresses at {where}")
 
     def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         ax = np.abs(x)

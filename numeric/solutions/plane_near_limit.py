@@ -8,7 +8,7 @@ linear in eps through the limit's two solves at mu gamma = 1e5, 1e6 (an extrapol
 neglected term is the limit's own, ~(gap_1 - gap_2)^2/(1 - c_max)), and p = q/mu on the slip zones (Coulomb's law,
 exact). Within ``NEAR_ZONE`` times c - c(mu gamma = 1e5) of x = c the two solves see different zones and are not
 combined: stresses and slip there raise ValueError. The cylinder's integrals of p and q (``plane_power_law``) are
-linear in the fields and are combined the same way.
+linear in the fields and are combined the same way (``numeric.core.plane_fields.FieldCombination``).
 
 References
 ----------
@@ -18,75 +18,26 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from numeric.core.plane_fields import FieldCombination, PlaneField
 
-import numpy as np
-
-from numeric.core.plane_fields import PlaneField, Weight, weighted_tail_integrals
-
-__all__ = ["NEAR_ZONE", "NearLimitField", "near_limit_field"]
+__all__ = ["NEAR_ZONE", "near_limit_field"]
 
 #: Half-width of the zone about x = c left unresolved, in units of c - c(mu gamma = 1e5) (~1.4e-5 (1 - c_max)).
 NEAR_ZONE = 10.0
 
 
-@dataclass(frozen=True, slots=True, eq=False)
-class NearLimitField:
-    """w_1 F_1 + w_2 F_2 of the limit's two solves (weights summing to 1) at friction ``mu``; stick-slip point ``c``."""
-
-    fields: tuple[PlaneField, PlaneField]
-    weights: tuple[float, float]
-    mu: float
-    c: float
-    gap: float
-
-    @property
-    def unresolved(self) -> tuple[float, float]:
-        """The interval of |x| about c where the stresses and the slip are not resolved."""
-        c_first = min(f.c for f in self.fields)
-        width = NEAR_ZONE * (self.c - c_first)
-        return c_first - width, self.c + width
-
-    def check(self, ax: np.ndarray) -> None:
-        """ValueError if a point |x| lies in ``unresolved``."""
-        lo, hi = self.unresolved
-        inside = (ax > lo) & (ax < hi)
-        if np.any(inside):
-            raise ValueError(f"x = {float(ax[inside][0])!r} lies within {hi - self.c:.2g} of the stick-slip point "
-                             f"c = {self.c!r}, where the solution at mu = {self.mu:g} (mu gamma beyond 1e6) is not "
-                             f"resolved: the stresses are linear in 1/(mu gamma) only away from it")
-
-    def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """p and q at -1 <= x <= 1: q combined, p combined on the stick zone and q/mu (Coulomb) on the slip zones."""
-        x = np.asarray(x, dtype=float)
-        self.check(np.abs(x).ravel())
-        (f1, f2), (w1, w2) = self.fields, self.weights
-        (p1, q1), (p2, q2) = f1.pressure_shear(x), f2.pressure_shear(x)
-        p, q = w1 * p1 + w2 * p2, w1 * q1 + w2 * q2
-        slipping = np.abs(x) > self.c
-        p = np.where(slipping, np.abs(q) / self.mu, p)
-        return p, q
-
-    def slip(self, x: np.ndarray) -> np.ndarray:
-        """u at -1 <= x <= 1, combined (0 on the stick zone)."""
-        x = np.asarray(x, dtype=float)
-        self.check(np.abs(x).ravel())
-        (f1, f2), (w1, w2) = self.fields, self.weights
-        return w1 * f1.slip(x) + w2 * f2.slip(x)
-
-    def tail_integrals(self, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
-        """``weighted_tail_integrals`` of the combination (linear in the field)."""
-        (f1, f2), (w1, w2) = self.fields, self.weights
-        (p1, q1), (p2, q2) = weighted_tail_integrals(f1, x, weight), weighted_tail_integrals(f2, x, weight)
-        return w1 * p1 + w2 * p2, w1 * q1 + w2 * q2
-
-
-def near_limit_field(mu: float, gamma: float, near: tuple[tuple[float, float, PlaneField], ...]) -> NearLimitField:
+def near_limit_field(mu: float, gamma: float, near: tuple[tuple[float, float, PlaneField], ...]) -> FieldCombination:
     """The field at friction mu from the limit's solves ``near`` ((mu gamma, 1 - c, field) at two mu gamma): weights
-    linear in 1/(mu gamma)."""
+    linear in 1/(mu gamma), the same for p and q, p = |q|/mu on the slip zones; unresolved within ``NEAR_ZONE`` times
+    c - c(mu gamma = 1e5) of x = c."""
     (m1, gap1, f1), (m2, gap2, f2) = near
     eps, e1, e2 = 1.0 / (mu * gamma), 1.0 / m1, 1.0 / m2
     w1 = (eps - e2) / (e1 - e2)
     w2 = 1.0 - w1
     gap = w1 * gap1 + w2 * gap2  # the line through both, which meets eps = 0 at gap_limit
-    return NearLimitField((f1, f2), (w1, w2), mu, 1.0 - gap, gap)
+    c = 1.0 - gap
+    c_first = min(f1.c, f2.c)
+    width = NEAR_ZONE * (c - c_first)
+    reason = (f"where the solution at mu = {mu:g} (mu gamma beyond 1e6) is not resolved: the stresses are linear in "
+              "1/(mu gamma) only away from it")
+    return FieldCombination((f1, f2), (w1, w2), (w1, w2), mu, c, gap, "p", (c_first - width, c + width), reason)

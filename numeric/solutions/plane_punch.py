@@ -21,36 +21,39 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from asymptotics.arrays import scalar_or_array
-from asymptotics.materials import check_c, check_mu, check_nu, real_number, resolve_gamma
-from asymptotics.plane import bonded_traction, pressure_sadowsky, stick_width_first_order
+from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, real_number, resolve_gamma
+from asymptotics.plane import bonded_traction, pressure_sadowsky, slip_width_first_order, stick_width_first_order
 
-from numeric.core.errors import NoEigenvalueError
+from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.plane_fields import PlaneField
-from numeric.core.plane_guess import gap_max
+from numeric.core.plane_guess import elliptic_ratio, gap_max, gap_max_relative_error
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
-from numeric.solutions.plane_small_gamma import (CHECK_NODES, NODES, SMALL_GAMMA, small_gamma_friction,
-                                                 small_gamma_stick_width_step)
-from numeric.solutions.flat_punch import check_rtol
-from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS,
-                                            ROUNDING_FLOOR, beyond_table_toward_full_stick, full_stick_friction,
+from numeric.solutions.plane_small_gamma import (DIRECT_FIELDS_GAMMA, ERROR_FACTOR, SERIES_GAP_MIN, SMALL_GAMMA,
+                                                 UnresolvedField, friction_slope, series_nodes, small_gamma_field,
+                                                 small_gamma_friction, small_gamma_stick_width)
+from numeric.solutions.flat_punch import check_level, check_rtol
+from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORDER_GAMMA, FIRST_ORDER_R_MAX,
+                                            FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
+                                            beyond_table_toward_full_stick, full_stick_friction, limit_resolved,
                                             solve_given_c, solve_given_mu, solve_limit)
 from numeric.solutions.solution import DeferredError, meets, warn_unmet
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
-           "plane_largest_stick_width", "points", "ABOVE_C_MAX", "RTOL_START"]
+           "plane_largest_stick_width", "points", "ABOVE_C_MAX", "ROUNDING_ULPS", "RTOL_START"]
 
 
 def points(x: ArrayLike) -> np.ndarray:
-    """x over the half-width: -1 <= x <= 1 (TypeError for non-numbers, ValueError naming x otherwise)."""
+    """x over the half-width: -1 <= x <= 1 (TypeError for non-numbers and booleans, as the axisymmetric solution's
+    stresses, ValueError naming x otherwise)."""
     raw = np.asarray(x) if x is not None else None
-    if raw is None or raw.dtype.kind not in "biuf":
+    if raw is None or raw.dtype.kind not in "iuf":
         raise TypeError(f"x must be a real number or an array of real numbers, got {x!r}")
     arr = raw.astype(float)
     if not np.all(np.isfinite(arr)) or np.any(np.abs(arr) > 1.0):
@@ -119,8 +122,11 @@ class StripPunchSolution:
         layout), ...": the level's layout was near a pole of the eigen functional, ``numeric.solutions.plane_solver.
         CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
-        "full stick to within ..." (1 - c < 2^-40 at small gamma) or "small-gamma series ..." (gamma < 0.005, nu near
-        1/2: mu from a series in gamma^2 through the solver at larger gamma, ``numeric.solutions.plane_small_gamma``).
+        "full stick to within ..." (1 - c < 2^-40 at small gamma), "small-gamma series ..." (gamma < 0.02, nu near
+        1/2: mu and the stresses from series in gamma^2 through the solver at larger gamma,
+        ``numeric.solutions.plane_small_gamma``), "near full stick at small gamma ..." (there, 1 - c < 1e-8: the solver
+        at gamma itself or the first-order law; stresses not computed below gamma = 1e-3) or "c = ... is c_max to
+        rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
 
@@ -187,27 +193,77 @@ def _meeting(rtol: float, run: Callable[[int], StripPunchSolution], value: Calla
     return best
 
 
-def _level(level: int) -> int:
-    if not isinstance(level, int) or isinstance(level, bool) or not 0 <= level < len(PLANE_LEVELS):
-        raise ValueError(f"level must be an integer from 0 to {len(PLANE_LEVELS) - 1}, got {level!r}")
-    return level
-
-
-def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError, level: int, mu: float | None = None,
-                route: str | None = None) -> StripPunchSolution:
+def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError, level: int, mu: float | None = None
+                ) -> StripPunchSolution:
     alternate = fine.layout.resolution.c_fraction != PLANE_LEVELS[level].c_fraction
-    route = route or f"solver level {level}{' (alternate layout)' if alternate else ''}, {fine.n_unknowns} unknowns"
+    route = f"solver level {level}{' (alternate layout)' if alternate else ''}, {fine.n_unknowns} unknowns"
     return StripPunchSolution(nu, fine.gamma, fine.mu if mu is None else mu, fine.c, fine.gap, error, route,
                               fine.residual, fine)
 
 
-def _small_gamma_route(level: int) -> str:
-    return (f"small-gamma series (gamma < {SMALL_GAMMA:g}): mu/gamma = K(c)/K'(c) + gamma^2 r, r quadratic in gamma^2 "
-            f"through solver level {level} at gamma = {', '.join(f'{g:g}' for g in NODES)} (error: 3x its distance "
-            f"from the series through {', '.join(f'{g:g}' for g in CHECK_NODES)}); stresses of the level-{level} solve "
-            "at c, at its own eigenvalue (off it the mode's (c - x)^(-1/2 - alpha) enters at x = c), with q = mu p on "
-            "the slip zones for this mu")
+def _small_gamma_route(level: int, gap: float) -> str:
+    nodes, check = series_nodes(gap)
+    return (f"small-gamma series (gamma < {SMALL_GAMMA:g}): mu/gamma = K(c)/K'(c) + gamma^2 r, r of degree 5 in "
+            f"gamma^2 through solver level {level} at gamma = {', '.join(f'{g:.3g}' for g in nodes)} (error: "
+            f"{ERROR_FACTOR:g}x its distance from the series through {', '.join(f'{g:.3g}' for g in check)}); p, "
+            "q/gamma and u/gamma the same interpolation of those solves' fields, q = mu p on the slip zones")
 
+
+def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, error: float | DeferredError,
+              solved: PlaneField | None, level: int) -> StripPunchSolution:
+    """Small gamma and 1 - c below the series' reach (``SERIES_GAP_MIN``): ``solved`` the solver's field at gamma
+    itself (mu and c with its error, which counts theta's rounding), else (gamma < ``FIRST_ORDER_GAMMA``, or given mu
+    where the solver's secant in c did not converge) the first-order law; the stresses of the solve where gamma >=
+    ``DIRECT_FIELDS_GAMMA``, else not computed."""
+    how = (f"solver level {level} at gamma itself" if solved is not None else
+           f"the first-order law mu/gamma = K(c)/K'(c) (error {FIRST_ORDER_R_MAX:g} gamma^2 relative in mu)")
+    route = (f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}, beyond the "
+             f"small-gamma series): mu and c from {how}")
+    if solved is not None and gamma >= DIRECT_FIELDS_GAMMA:
+        return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; its stresses", solved.residual, solved)
+    reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} < {DIRECT_FIELDS_GAMMA:g} with "
+              f"1 - c = {gap:.3g} < {SERIES_GAP_MIN:g}: the small-gamma series does not reach so near c = 1, and the "
+              "solver's shear carries a rounding amplified by 1/gamma^2 there")
+    return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; stresses not computed", 0.0,
+                              UnresolvedField(reason))
+
+
+def _small_gamma_given_c(nu: float | None, gamma: float, c: float, level: int) -> StripPunchSolution:
+    """Given c at gamma < SMALL_GAMMA: the series (mu and the fields), or near c = 1 ``_near_one``."""
+    gap = 1.0 - c
+    if gap >= SERIES_GAP_MIN:
+        mu, error = small_gamma_friction(c, gap, gamma, level)
+        return StripPunchSolution(nu, gamma, mu, c, gap, error, _small_gamma_route(level, gap), 0.0,
+                                  small_gamma_field(c, gap, gamma, mu, level))
+    if gamma < FIRST_ORDER_GAMMA:
+        mu = gamma / elliptic_ratio(c, gap)
+        return _near_one(nu, gamma, mu, c, gap, FIRST_ORDER_R_MAX * gamma * gamma * mu, None, level)
+    solve = solve_given_c(c, gap, gamma, level)
+    return _near_one(nu, gamma, solve.field.mu, c, gap, solve.error, solve.field, level)
+
+
+def _small_gamma_given_mu(nu: float | None, gamma: float, mu: float, level: int) -> StripPunchSolution:
+    """Given mu at gamma < SMALL_GAMMA: Newton on the series (``small_gamma_stick_width``), or near c = 1
+    ``_near_one``."""
+    found = small_gamma_stick_width(mu, gamma, level)
+    if found is not None:
+        c, gap, error = found
+        return StripPunchSolution(nu, gamma, mu, c, gap, error, _small_gamma_route(level, gap), 0.0,
+                                  small_gamma_field(c, gap, gamma, mu, level))
+    if gamma >= FIRST_ORDER_GAMMA:
+        try:
+            solve = solve_given_mu(mu, gamma, level)
+            return _near_one(nu, gamma, mu, solve.field.c, solve.field.gap, solve.error, solve.field, level)
+        except SolverError:  # the secant in c near c = 1 at small gamma (gamma = 2e-4, 1 - c = 5e-10): the law below
+            pass
+    c, gap = float(stick_width_first_order(mu, gamma)), float(slip_width_first_order(mu, gamma))
+    error = c * gap * FIRST_ORDER_R_MAX * gamma * gamma * mu / friction_slope(c, gap, gamma)
+    return _near_one(nu, gamma, mu, c, gap, error, None, level)
+
+
+#: Given c within this many units in the last place of c_max (``gap_max``), c is c_max to rounding: the answer is the
+#: slip limit, mu = inf (the axisymmetric ``numeric.solutions.solver.ROUNDING_ULPS``).
+ROUNDING_ULPS = 4.0
 
 #: Given c, 1 - c below 1 - c_max of the guess table by more than this (relative) is refused at once (the table's
 #: 1 - c_max is good to ~1e-8 relative; nearer, the solver decides): Newton in theta failed to converge there before.
@@ -227,8 +283,13 @@ def _below_solver(mu: float, gamma: float, level: int) -> bool:
 
 
 def _full_stick(mu: float, gamma: float, level: int) -> bool:
-    """Whether 1 - c < FULL_STICK_GAP for mu: asked only beyond the guess table toward full stick at small gamma."""
-    return beyond_table_toward_full_stick(mu, gamma) and mu >= full_stick_friction(gamma, level)
+    """Whether 1 - c < FULL_STICK_GAP for mu: only where c_max lies above 1 - FULL_STICK_GAP (``limit_resolved``
+    false), for mu gamma beyond LIMIT_MU_GAMMA[1] (1 - c within 1.4e-6 (1 - c_max) of 1 - c_max) or mu beyond the
+    guess table toward full stick and at least the friction at 1 - c = FULL_STICK_GAP."""
+    if limit_resolved(gamma):
+        return False
+    return mu * gamma > LIMIT_MU_GAMMA[1] or (beyond_table_toward_full_stick(mu, gamma)
+                                              and mu >= full_stick_friction(gamma, level))
 
 
 def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
@@ -243,8 +304,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     """The flat strip punch with friction: give exactly one of ``mu`` and ``c``, and ``nu`` or ``gamma``.
 
     mu = 0 is Sadowsky's frictionless punch, mu = inf or c = 1 Abramov's fully stuck one (closed forms);
-    otherwise the singular-basis solver at ``level`` (0-4, default 2), with the level one degree lower as error
-    estimate. c above the largest stick width c_max(gamma) raises ``NoEigenvalueError``.
+    otherwise the singular-basis solver at ``level`` (0-4, default 2, validated as ``numeric.flat_punch`` does), with
+    the level one degree lower as error estimate. c above the largest stick width c_max(gamma) raises
+    ``NoEigenvalueError``; c within 4 ulp of it is the slip limit (mu = inf, ``plane_slip_limit``).
 
     ``rtol`` (instead of ``level``): the coarsest level whose typical accuracy meets it (``RTOL_START``), then finer
     ones while ``error`` exceeds rtol times mu (given c) or c (given mu); if none does (the estimate's floor is 1e-10
@@ -264,7 +326,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         return _meeting(rtol, lambda lv: strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=lv), value)
     nu = None if nu is None else real_number(check_nu(nu), "nu")
     g = resolve_gamma(nu, gamma)
-    level = _level(DEFAULT_LEVEL if level is None else level)
+    level = DEFAULT_LEVEL if level is None else check_level(level)
     if (mu is None) == (c is None):
         raise ValueError("give exactly one of mu (friction coefficient) or c (stick half-width / a)")
     if c is not None:
@@ -276,14 +338,18 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         if c < C_SMALLEST:
             mu, error = law_friction_coefficient(c, g, level)
             return _from_law(nu, g, mu, c, error)
-        largest = gap_max(g)  # 1 - c_max from the guess table (nan below its gamma range, where c_max is within 1e-8 of 1)
+        largest = gap_max(g)  # 1 - c_max: the guess table's series, or below its band the small-gamma form
+        if abs((1.0 - c) - largest) <= ROUNDING_ULPS * math.ulp(c):
+            # c is c_max to rounding: the slip limit, mu = inf (as the axisymmetric numeric.flat_punch answers)
+            limit = plane_slip_limit(nu, gamma=gamma, level=level)
+            return replace(limit, route=f"c = {c!r} is c_max to rounding (|(1 - c) - (1 - c_max)| = "
+                                        f"{abs((1.0 - c) - largest):.2g} <= {ROUNDING_ULPS:g} ulp of c): {limit.route}")
         if 1.0 - c < (1.0 - ABOVE_C_MAX) * largest:
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
-        solve = solve_given_c(c, 1.0 - c, g, level)
         if g < SMALL_GAMMA:
-            mu, error = small_gamma_friction(c, 1.0 - c, g, level)
-            return _from_field(nu, solve.field.with_friction(mu), error, level, mu, _small_gamma_route(level))
+            return _small_gamma_given_c(nu, g, c, level)
+        solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
     if mu == 0.0:
@@ -294,8 +360,9 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         c, error = law_stick_width(mu, g, level)
         return _from_law(nu, g, mu, c, error)
     if _full_stick(mu, g, level):
+        how = f"solver level {level}" if g >= FIRST_ORDER_GAMMA else "the first-order law"
         route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level):.10g}, the friction "
-                 f"at 1 - c = {FULL_STICK_GAP:.2g} (solver level {level}); c = 1 - {FULL_STICK_GAP / 2:.2g} +- "
+                 f"at 1 - c = {FULL_STICK_GAP:.2g} ({how}); c = 1 - {FULL_STICK_GAP / 2:.2g} +- "
                  f"{FULL_STICK_GAP / 2:.2g}, stresses of the bonded punch (Abramov), no slip")
         return StripPunchSolution(nu, g, mu, 1.0 - 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP,
                                   route, 0.0, _Abramov(g))
@@ -306,23 +373,33 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
-    solve = solve_given_mu(mu, g, level)
     if g < SMALL_GAMMA:
-        gap, error = small_gamma_stick_width_step(solve.field.c, solve.field.gap, g, mu, level)
-        field = solve_given_c(1.0 - gap, gap, g, level).field.with_friction(mu)
-        return _from_field(nu, field, error, level, mu, _small_gamma_route(level))
+        return _small_gamma_given_mu(nu, g, mu, level)
+    solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 
 
 def plane_slip_limit(nu: float | None = None, *, gamma: float | None = None, level: int = DEFAULT_LEVEL
                      ) -> StripPunchSolution:
     """The frictional strip punch in the limit mu -> inf: c = c_max < 1, no pressure on the slip zones (q = R/gamma
-    there); not the fully stuck punch (``strip_punch(mu=inf)``). ``error`` is that of 1 - c_max."""
+    there); not the fully stuck punch (``strip_punch(mu=inf)``). ``error`` is that of 1 - c_max.
+
+    Where 1 - c_max < 2^-40 = 9.1e-13 (gamma below ~0.157, nu above ~0.407; ``numeric.solutions.plane_solver.
+    limit_resolved``) the slip zones are below what the solver resolves: c = 1 - (1 - c_max) (1.0 to double precision
+    below 1.1e-16), ``gap`` = 1 - c_max from the limit problem's small-gamma form (``numeric.core.plane_guess.gap_max``)
+    and ``error`` its error bound, with the stresses of the bonded punch (Abramov; as ``strip_punch`` gives them where
+    1 - c < 2^-40). At gamma = 0 (nu = 1/2) c = 1: no coupling."""
     nu = None if nu is None else real_number(check_nu(nu), "nu")
     g = resolve_gamma(nu, gamma)
-    if g == 0.0:
-        raise ValueError("gamma = 0 (nu = 1/2): no coupling, every mu > 0 sticks fully (c = 1)")
-    solve = solve_limit(g, _level(level))
+    level = check_level(level)
+    if not limit_resolved(g):
+        gap = gap_max(g)
+        error = gap * gap_max_relative_error(g) if gap > 0.0 else 0.0  # 0: 1 - c_max underflows (gamma < 0.007)
+        route = (f"limit mu -> inf: 1 - c_max = {gap:.3g} +- {error:.2g} (the limit problem's small-gamma form) is below "
+                 f"{FULL_STICK_GAP:.2g}, which the solver does not resolve; stresses of the bonded punch (Abramov), no "
+                 "slip" if g > 0.0 else "limit mu -> inf at gamma = 0: no coupling, c = 1")
+        return StripPunchSolution(nu, g, math.inf, 1.0 - gap, gap, error, route, 0.0, _Abramov(g))
+    solve = solve_limit(g, level)
     f = solve.field
     return StripPunchSolution(nu, g, math.inf, 1.0 - solve.gap_limit, solve.gap_limit,
                               solve.error, f"limit mu -> inf (slip zones without pressure; c extrapolated from mu gamma "
@@ -337,8 +414,11 @@ def plane_largest_stick_width(nu: float | None = None, *, gamma: float | None = 
 
 
 def _elementwise(values: np.ndarray, nu: ArrayLike, gamma: ArrayLike, solve) -> np.ndarray | float:
-    """solve(value, nu, gamma) at each pair of ``values`` and nu (or gamma), broadcast, as an array of their shape."""
-    other = np.asarray(check_nu(nu) if gamma is None else gamma, dtype=float)
+    """solve(value, nu, gamma) at each pair of ``values`` and nu (or gamma), broadcast, as an array of their shape;
+    exactly one of nu and gamma (ValueError, as ``strip_punch``), each checked (``check_nu``, ``check_gamma``)."""
+    if (nu is None) == (gamma is None):
+        raise ValueError("give exactly one of nu (Poisson's ratio) or gamma (coupling constant)")
+    other = check_nu(nu) if gamma is None else check_gamma(gamma)
     v, o = np.broadcast_arrays(values, other)
     out = np.array([solve(float(a), None if gamma is not None else float(b), None if gamma is None else float(b))
                     for a, b in zip(v.ravel(), o.ravel())])

@@ -20,7 +20,9 @@ careful Newton of ``plane_given_c`` from the table's guess or the first-order la
 d theta / d logit c (``numeric.core.eigenvalue.guided_steps``, the axisymmetric solver's; two solves, the table's c
 being good to ~1e-9); elsewhere the secant method in logit(c) at theta = atan(mu gamma) from the first-order law's c
 (kept below the largest stick width). mu -> inf: the limit problem theta = pi/2, whose root is the largest stick
-width c_max.
+width c_max, solved where 1 - c_max >= 2^-40 (``limit_resolved``; below, the callers take 1 - c_max from the limit
+problem's small-gamma form, ``numeric.core.plane_guess.gap_max``). Toward gamma = 0 the first-order law's error,
+at most ``FIRST_ORDER_R_MAX`` gamma^2 relative, falls below the given-c solve's rounding (``FIRST_ORDER_GAMMA``).
 
 References
 ----------
@@ -42,13 +44,14 @@ from numeric.core.plane_charts import PlaneResolution, plane_partner
 from numeric.core.plane_eigenvalue import (PlaneEigensolution, partner_shift_theta, partner_shift_xi, plane_at_theta,
                                            plane_given_c, plane_given_c_linearised, plane_given_theta, theta_rounding)
 from numeric.core.plane_fields import PlaneField
-from numeric.core.plane_guess import elliptic_ratio, gap_fit, stick_width_guess, theta_guess
+from numeric.core.plane_guess import elliptic_ratio, gap_max, gap_max_small_gamma, stick_width_guess, theta_guess
 from numeric.core.plane_guess_data import ERRORS as GUESS_ERRORS, GAMMA_N, GAP_N as GUESS_GAP_N
 from numeric.solutions.solution import DeferredError
 
 __all__ = ["PLANE_LEVELS", "DEFAULT_LEVEL", "ROUNDING_FLOOR", "PlaneSolve", "solve_given_c", "solve_given_mu",
            "near_full_stick_gap", "FULL_STICK_GAP", "full_stick_friction", "beyond_table_toward_full_stick",
-           "solve_limit", "C_SMALLEST", "LIMIT_MU_GAMMA", "THETA_SCATTER"]
+           "solve_limit", "limit_resolved", "FIRST_ORDER_R_MAX", "FIRST_ORDER_GAMMA", "C_SMALLEST", "C_SMALLEST_SLACK",
+           "LIMIT_MU_GAMMA", "LIMIT_APPROACH", "THETA_SCATTER"]
 
 #: Levels 0-4 (degree 12, 15, 18, 21, 24; h_beta times quadratics at c). Measured at five (nu, c) (nu = 0.25, 0.3,
 #: 0.45; c = 0.05 ... 0.65) against the median of degrees 26 and 28 in two layouts (``numeric.studies.plane_bench``):
@@ -125,7 +128,9 @@ def _solve_in(c: float, gap: float, gamma: float, res: PlaneResolution, theta: f
     """The given-c solve at ``res`` from ``theta`` (else the table's guess): linearised Newton, else the careful
     iteration from that start, else from the first-order law (the careful Newton started within ~1e-12 of the root can
     end jittering at its rounding floor without settling)."""
-    guess = theta_guess(c, gap, gamma)
+    # just below the table's smallest c (C_SMALLEST_SLACK), its theta there: the first-order law is 3 % off at
+    # gamma = 0.18, c = 1e-5, and Newton from it did not settle
+    guess = theta_guess(c, gap, gamma) if c >= C_SMALLEST else theta_guess(C_SMALLEST, 1.0 - C_SMALLEST, gamma)
     if theta is None and guess is not None:
         theta = guess.theta
     first_order = math.atan(gamma * gamma / elliptic_ratio(c, gap))
@@ -143,8 +148,8 @@ def _solve_in(c: float, gap: float, gamma: float, res: PlaneResolution, theta: f
 def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
     """mu for stick half-width c = 1 - gap at ``level``; the error (formed when first read) is the shift of mu to the
     partner resolution (one degree lower), from one evaluation of its eigen functional (``partner_shift_theta``).
-    ValueError below ``C_SMALLEST``."""
-    if c < C_SMALLEST:
+    ValueError below ``C_SMALLEST`` (less ``C_SMALLEST_SLACK``)."""
+    if c < (1.0 - C_SMALLEST_SLACK) * C_SMALLEST:
         raise ValueError(f"c = {c!r} is below {C_SMALLEST:g}, outside the solver's range (first-order law: "
                          "mu/gamma = K(c)/K'(c))")
     res = PLANE_LEVELS[level]
@@ -160,9 +165,22 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
     return PlaneSolve(fine, DeferredError(estimate), level)
 
 
+#: A/(1 - c_max) of the approach to c_max, 1 - c = (1 - c_max) (1 + A/(mu gamma)) (measured ~1.4, ``LIMIT_MU_GAMMA``):
+#: the start of the secant in c where mu lies beyond the guess table and c_max within reach.
+LIMIT_APPROACH = 1.4
+
 #: mu gamma of the two solves the limit mu -> inf is extrapolated from: 1 - c = (1 - c_max) + A/(mu gamma) + O(mu^-2),
 #: A ~ 1.4 (1 - c_max) (measured), so linear extrapolation from 1e5 and 1e6 leaves ~1e-11 (1 - c_max)
 LIMIT_MU_GAMMA = (1e5, 1e6)
+
+
+def limit_resolved(gamma: float) -> bool:
+    """Whether the limit mu -> inf is solved (``solve_limit``): its slip zones, 1 - c_max (``gap_max``), are at least
+    ``FULL_STICK_GAP`` wide (gamma above ~0.157, nu below ~0.407). Below, the layout down to them costs without
+    bound (at nu = 0.45, 1 - c_max = 1e-20: 30 s; at 0.47, 1e-29: 150 s and 1.6 GB; at 0.499 1 - c_max underflows),
+    c_max is 1 to within 9.1e-13 and the bonded punch's stresses are within the solver's accuracy of the limit's (as
+    ``full_stick_friction`` measured): the answer is the closed form with 1 - c_max from ``gap_max``."""
+    return gap_max(gamma) >= FULL_STICK_GAP
 
 
 @lru_cache(maxsize=16)
@@ -171,9 +189,11 @@ def solve_limit(gamma: float, level: int) -> PlaneSolve:
     from ``LIMIT_MU_GAMMA`` (at mu = inf itself the generic mode degenerates); error in 1 - c_max: the partner's
     shift at the larger mu gamma, or the extrapolation's neglected O(mu^-2) term if larger. Against the limit problem
     solved at theta = pi/2 where that works (nu = 0, -1/2): 2e-13, 1e-13 absolute in 1 - c_max. The two solves are
-    kept (``near``) for friction beyond ``LIMIT_MU_GAMMA[1]``; the result is cached per gamma and level."""
+    kept (``near``) for friction beyond ``LIMIT_MU_GAMMA[1]``; the result is cached per gamma and level. The public
+    routes call it only where ``limit_resolved``: below, its cost grows without bound (10-15 s at gamma = 0.13 ...
+    0.15, where it still converges; SolverError at 0.12)."""
     res = PLANE_LEVELS[level]
-    gap = gap_fit(gamma)
+    gap = gap_max_small_gamma(gamma)  # the start: not the guess table's series, which the table's build computes here
     xi = math.log1p(-gap) - math.log(gap)
     gaps, fields = [], []
     for mg in LIMIT_MU_GAMMA:
@@ -182,11 +202,11 @@ def solve_limit(gamma: float, level: int) -> PlaneSolve:
         fields.append(PlaneField(solution))
         gaps.append(solution.layout.gap)
     m1, m2 = LIMIT_MU_GAMMA
-    gap_max = gaps[1] - (gaps[0] - gaps[1]) * m1 / (m2 - m1)
+    gap_limit = gaps[1] - (gaps[0] - gaps[1]) * m1 / (m2 - m1)
     fine = fields[1]
     partner = _gap_error(fine, partner_shift_xi(math.atan(m2), gamma, solution, plane_partner(res)))
     # the neglected B/(m1 m2) of the extrapolation: B ~ A^2/(1 - c_max), i.e. ~ (gaps[0] - gaps[1])^2/(1 - c_max)
-    return PlaneSolve(fine, max(partner, (gaps[0] - gaps[1]) ** 2 / gap_max), level, gap_max,
+    return PlaneSolve(fine, max(partner, (gaps[0] - gaps[1]) ** 2 / gap_limit), level, gap_limit,
                       tuple(zip(LIMIT_MU_GAMMA, gaps, fields)))
 
 
@@ -217,6 +237,10 @@ THETA_SCATTER = 5e-11
 
 #: Stick widths below this are not solved for (the layout needs ~40 elements at 1e-5, and round-off grows like 1/c).
 C_SMALLEST = 1e-5
+#: Given mu at the hand-over to the law below C_SMALLEST (mu at least the law's, i.e. the solver's, mu at C_SMALLEST),
+#: the given-c solves may land below C_SMALLEST by the rounding of the steps toward it (6e-9 relative measured at
+#: nu = 0.49): they are solved down to C_SMALLEST (1 - C_SMALLEST_SLACK).
+C_SMALLEST_SLACK = 1e-6
 
 
 #: Given mu, 1 - c below this (2^-40 = 9.1e-13: c = 1 - 2^-40 is a double and gives this gap back exactly) is
@@ -226,13 +250,29 @@ C_SMALLEST = 1e-5
 FULL_STICK_GAP = 2.0**-40
 
 
+#: |r| = |mu/mu_1 - 1|/gamma^2 (mu_1 = gamma K(c)/K'(c), the first-order law) is below this for every c from 1e-5 to
+#: 1 - 2^-53 at gamma <= 0.01: measured with the solver at gamma = 0.002, 0.005, 0.01, r = 2.0, 4.8, 9.0, 14.7, 21.8,
+#: 30.3, 40.3, 49.6 at 1 - c = 1e-2, 1e-4, ..., 1e-14, 2.2e-16 (r grows like log(1/(1 - c))^2 toward c = 1; 0.55 at
+#: c = 0.5; it changes by 3000 gamma^2 at 1 - c = 2.2e-16), so the first-order law's relative error in mu is at most
+#: FIRST_ORDER_R_MAX gamma^2.
+FIRST_ORDER_R_MAX = 60.0
+#: Below this gamma the first-order law's mu (error FIRST_ORDER_R_MAX gamma^2, relative) is more accurate than a
+#: given-c solve's, whose theta carries the absolute rounding ``theta_rounding`` (5e-13 c^-0.4) on theta ~ gamma^2 K/K'
+#: (K/K' = 6.5 ... 12 for 1 - c = 1e-8 ... 1e-16): both 1.7e-6 here.
+FIRST_ORDER_GAMMA = 1.7e-4
+
+
 @lru_cache(maxsize=64)
 def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
-    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the
-    stick zone fills the contact to within 9.1e-13. For gamma below the guess table's GAMMA_N only, where c_max lies
-    within 1e-12 of 1 (above it c = 1 - 2^-40 may lie above c_max: ValueError)."""
-    if not 0.0 < gamma < GAMMA_N:
-        raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined below GAMMA_N = {GAMMA_N} only")
+    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level; below
+    ``FIRST_ORDER_GAMMA`` the first-order law, to 60 gamma^2 relative): from there on the stick zone fills the contact
+    to within 9.1e-13. Only where c_max lies above 1 - ``FULL_STICK_GAP`` (the limit is not resolved,
+    ``limit_resolved``; else ValueError: no friction reaches it)."""
+    if not 0.0 < gamma or limit_resolved(gamma):
+        raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined only where 1 - c_max < "
+                         f"{FULL_STICK_GAP:.3g} (gamma below ~0.157)")
+    if gamma < FIRST_ORDER_GAMMA:
+        return gamma / elliptic_ratio(1.0 - FULL_STICK_GAP, FULL_STICK_GAP)
     return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
 
 
@@ -252,7 +292,8 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
     res = PLANE_LEVELS[level]
     theta = math.atan(mu * gamma)
     found = stick_width_guess(theta, gamma)
-    if found is not None and found[0] >= C_SMALLEST:
+    smallest = (1.0 - C_SMALLEST_SLACK) * C_SMALLEST
+    if found is not None and found[0] >= smallest:
         c, gap, guess = found
         layout = [res]  # the steps stay in the layout the first solve chose (a pole of G near one step is near all)
 
@@ -277,14 +318,17 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
 
             return PlaneSolve(fine, DeferredError(estimate), level)
     c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]
-    if c < C_SMALLEST:
+    if c < smallest:
         raise ValueError(f"mu = {mu:.6g} is too small at gamma = {gamma:.6g}: the stick half-width c ~ {c:.2g} lies "
                          f"below {C_SMALLEST:g}, outside the solver's range (first-order law: c ~ 4 exp(-pi gamma/(2 mu)))")
-    gap_max = gap_fit(gamma)
-    gap = max(1.0 - c, 2.0 * gap_max)
+    largest = gap_max(gamma)
+    gap = max(1.0 - c, 2.0 * largest)
     if found is None and beyond_table_toward_full_stick(mu, gamma):
-        between = near_full_stick_gap(mu, gamma, full_stick_friction(gamma, level), FULL_STICK_GAP)
-        gap = gap if between is None else between
+        if limit_resolved(gamma):  # c_max is within reach (gamma just below GAMMA_N): start from the approach to it
+            gap = max(1.0 - c, largest * (1.0 + LIMIT_APPROACH / (mu * gamma)))
+        else:
+            between = near_full_stick_gap(mu, gamma, full_stick_friction(gamma, level), FULL_STICK_GAP)
+            gap = gap if between is None else between
     c = min(c, 1.0 - gap)
     xi = math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)
     solution = plane_given_theta(theta, gamma, xi, res, step=1e-3)

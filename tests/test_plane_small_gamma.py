@@ -167,7 +167,10 @@ def test_near_full_stick_at_small_gamma():
     first = s.gamma / elliptic_ratio(c, gap)
     assert s.route.startswith("near full stick") and "solver level 2" in s.route
     assert 0.0 < s.mu / first - 1.0 <= FIRST_ORDER_R_MAX * s.gamma**2
-    assert s.error <= 1e-9 * s.mu  # the solver's estimate, theta's rounding included (measured 6.7e-10 relative)
+    # the solver's estimate counts theta's rounding scatter, which depends on the BLAS path (measured 6.7e-10 relative
+    # with one BLAS thread, 1.5e-9 with the default threads): 1e-8 says the solver answered (the first-order law's
+    # bound, FIRST_ORDER_R_MAX gamma^2, is 2.3e-2 here) with room above that scatter
+    assert s.error <= 1e-8 * s.mu
     assert np.isfinite(s.shear(0.999)) and s.slip(1.0) < 0.0
     tiny = plane.flat_punch(nu=0.4999999, c=c)
     assert tiny.mu == tiny.gamma / elliptic_ratio(c, gap)

@@ -327,3 +327,20 @@ def test_stresses_shown_at_high_friction_are_that_friction_s(nu):
         np.testing.assert_allclose(h.flat.shear(annulus), 1e4 * h.flat.pressure(annulus), rtol=1e-12)  # (2.8)
     else:
         assert h.flat.route.startswith("adhesive stresses")
+
+
+def test_to_dict_is_strict_json_where_a_modulus_overflows():
+    # E = 1.8e308 with nu != 0 makes the reduced modulus (and the indenter's E from G) inf; to_dict promises None for
+    # infinities at every depth, so that --json can write strict JSON (it failed: "Out of range float values")
+    import json
+
+    from numeric.app.plane_contact import press_cylinder, press_strip
+
+    huge = elastic(E=1.7976931348623157e308, nu=0.3)
+    results = [press_strip(0.005, huge, mu=0.3, load=1e5), press_cylinder(0.005, huge, mu=0.3, load=1e5),
+               indent(FlatPunch(0.005), elastic(E=1e300, nu=0.0), mu=0.3, approach=1e-300, indenter=huge)]
+    for r in results:
+        d = r.to_dict()
+        json.dumps(d, allow_nan=False)
+    assert results[0].to_dict()["materials"]["reduced_modulus"] is None
+    assert results[2].to_dict()["materials"]["indenter"]["E"] is None

@@ -618,7 +618,6 @@ def _contact_dict(contact: Contact) -> dict:
         "indentation_constant": contact.A,
         "strain": contact.strain,
     }
-    out = {k: _finite_or_none(v) for k, v in out.items()}
     if contact.strain > SMALL_STRAIN:
         out["warning"] = small_strain_message(contact.strain)
     if contact.mu == 0.0:
@@ -626,13 +625,13 @@ def _contact_dict(contact: Contact) -> dict:
     elif contact.frictionless is not None:
         out["frictionless"] = {k: v for k, v in contact.frictionless.to_dict().items() if k in out}
     if "frictionless" in out:
-        out["ratios"] = {k: _finite_or_none(v) for k, v in contact.ratios.items()}
+        out["ratios"] = dict(contact.ratios)
     out["materials"] = _materials_dict(contact.materials)
     out["indenter"] = _shape_dict(contact.shape)
     out["error"] = contact.error
     out["route"] = contact.route
     out["units"] = {"length": "m", "force": "N", "stress": "Pa", "stiffness": "N/m"}
-    return out
+    return json_ready(out)
 
 
 def _materials_dict(pair: MaterialPair) -> dict:
@@ -654,7 +653,13 @@ def _ratio(value: float, reference: float) -> float | None:
     return value / reference
 
 
-def _finite_or_none(value):
+def json_ready(value):
+    """``value`` with every non-finite float, at any depth of dicts, lists and tuples, as None (JSON has no inf or
+    nan: a modulus of 1.8e308 made the reduced modulus inf, and the CLI's --json output failed)."""
+    if isinstance(value, dict):
+        return {k: json_ready(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return type(value)(json_ready(v) for v in value)
     if isinstance(value, float) and not math.isfinite(value):
         return None
     return value

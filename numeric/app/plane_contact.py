@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
-from numeric.app.contact import Elastic, MaterialPair, positive
+from numeric.app.contact import Elastic, MaterialPair, json_ready, positive
 from numeric.core.plane_fields import FieldCombination
 from numeric.solutions.plane_law import FullSlipField
 from numeric.solutions.plane_power_law import plane_power_law
@@ -84,10 +84,8 @@ class LineContact:
                 value = {"half_space": {"G": value.half_space.G, "nu": value.half_space.nu},
                          "indenter": None if value.indenter is None else {"G": value.indenter.G, "nu": value.indenter.nu},
                          "reduced_modulus": value.reduced_modulus}
-            elif isinstance(value, float) and not math.isfinite(value):
-                value = None
             out[name] = value
-        return out
+        return json_ready(out)
 
 
 def _pair(half_space: Elastic, indenter: Elastic | None) -> tuple[MaterialPair, float, float]:

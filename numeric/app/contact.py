@@ -653,7 +653,7 @@ def _ratio(value: float, reference: float) -> float | None:
     return value / reference
 
 
-def json_ready(value):
+def json_ready(value: object) -> object:
     """``value`` with every non-finite float, at any depth of dicts, lists and tuples, as None (JSON has no inf or
     nan: a modulus of 1.8e308 made the reduced modulus inf, and the CLI's --json output failed)."""
     if isinstance(value, dict):

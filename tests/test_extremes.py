@@ -170,3 +170,16 @@ def test_vanishing_gamma_takes_the_law_and_agrees_with_the_solver(ratio):
         assert law.c == pytest.approx(solver.c, rel=0, abs=solver.error + 1e-15)
         back = flat_punch(gamma=g, c=law.c)
         assert back.mu == pytest.approx(ratio * g, rel=1e-14)  # the law inverted both ways: rounding of f0 (~10 ops)
+
+
+@pytest.mark.parametrize("nu", [0.0, -0.9999999999999999])
+def test_slip_where_theta_rounds_to_half_pi(nu):
+    # at mu gamma = 7.5e19 theta = atan(mu gamma) is pi/2 in double, alpha = 1/2, and u*'s edge family s^(2 alpha) is
+    # s, a polynomial: the family (s^t - 1 - t (s - 1))/(t (1 - t)), t = 2 alpha, is s - 1 - s log s there (with
+    # (s^t - 1)/t alone the interpolation of u* was singular: LinAlgError). Levels 2 and 4 agree to 1e-10 relative
+    # (level 2's slip next to c_max; measured 5e-12, 9e-12)
+    s = flat_punch(nu=nu, mu=1e20)
+    x = np.array([0.5 * (1.0 + s.c), 1.0 - 0.01 * (1.0 - s.c), 1.0])  # on the slip annulus
+    u2, u4 = s.slip(x), flat_punch(nu=nu, mu=1e20, level=4).slip(x)
+    assert np.all(u2 < 0.0)
+    np.testing.assert_allclose(u2, u4, rtol=1e-10, atol=0.0)

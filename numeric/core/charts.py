@@ -249,10 +249,11 @@ def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = 
     Stick/slip end: (None, h_beta(s)), beta = 1 - 2 alpha; edge: (s^(2 alpha - 1), s^(2 alpha + 1) log s).
     ``displacement``: the families of u* = x int_x^1 q - gamma int_0^x t p (one Abel order
     smoother): at c, where u* vanishes from the slip side like s^2 and s^(1 + beta), (s^2, s h_beta);
-    at the edge, where u* is A(s) + s^(2 alpha) B(s), (None, (s^(2 alpha) - 1)/(2 alpha)): the same space for
-    alpha > 0, but the family stays apart from A's as alpha -> 0 (log s at alpha = 0), where s^(2 alpha) itself
-    falls onto A's Legendre polynomials (at mu gamma ~ 1e-9 the interpolation of u* lost 6 digits near the edge,
-    below ~1e-15 it was singular).
+    at the edge, where u* is A(s) + s^t B(s), t = 2 alpha, (None, (s^t - 1 - t (s - 1))/(t (1 - t))): the same space
+    for 0 < t < 1, but the family stays apart from A's Legendre polynomials at both ends, where s^t itself falls onto
+    them (1 at t = 0, s at t = 1): log s - (s - 1) at t = 0 (mu = 0), s - 1 - s log s at t = 1 (mu = inf). With s^t,
+    at mu gamma ~ 1e-9 the interpolation of u* lost 6 digits near the edge and below ~1e-15 it was singular; with
+    (s^t - 1)/t alone it was singular at mu = inf.
     """
     if kind in (STICK_END, SLIP_END):
         if displacement:  # u* = 0 at c with no linear term: s^2 A(s) + s^(1 + beta) B(s)
@@ -266,7 +267,12 @@ def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = 
     sp = np.where(pos, s, 1.0)
     if displacement:
         ls = np.log(sp)
-        return None, np.where(pos, ls if alpha == 0.0 else np.expm1((2.0 * alpha) * ls) / (2.0 * alpha), 0.0)
+        t = 2.0 * alpha
+        if t <= 0.5:  # (s^t - 1)/t - (s - 1), over 1 - t
+            family = ls - (sp - 1.0) if t == 0.0 else (np.expm1(t * ls) / t - (sp - 1.0)) / (1.0 - t)
+        else:  # s (s^(t - 1) - 1)/(t (1 - t)) + (s - 1)/t, the same without the cancellation near t = 1
+            family = (sp - 1.0) - sp * ls if t >= 1.0 else sp * np.expm1((t - 1.0) * ls) / (t * (1.0 - t)) + (sp - 1.0) / t
+        return None, np.where(pos, family, 0.0)
     weight = np.where(pos, sp ** (2.0 * alpha - 1.0), 0.0)
     return weight, weight * np.where(pos, sp * sp * np.log(sp), 0.0)
 

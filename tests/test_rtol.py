@@ -298,3 +298,13 @@ def test_power_law_passes_rtol_through_but_not_to_the_law():
     assert abs(h.C - reference.C) <= 1e-2 * abs(reference.C) and abs(h.A - reference.A) <= 1e-2 * reference.A
     fine = power_law(2, nu=0.25, c=0.5, rtol=1e-11).flat  # rtol reaches the solver's levels and is met there
     assert fine.route.startswith("solver level") and fine.error <= 1e-11 * fine.mu
+
+
+def test_below_the_handover_vector_and_scalar_agree_to_the_bit():
+    # below mu(1e-5) both the vectorised stick_radius and flat_punch use the law matched at c = 1e-5, its ratio formed
+    # the same way (one table read per point): the same c to the last bit (a fuzz campaign found 1e-13 relative where
+    # the vector read the table for all points at once; c's sensitivity to mu is ~log(1/c) at c ~ 1e-29 ... 1e-293)
+    points = [(0.00578371717279551, 0.2194592072141267), (0.0016316614813357663, -0.5938427629850858),
+              (0.0002487196301686297, 0.4007771063412401), (0.03, 0.0)]
+    for mu, nu in points:
+        assert stick_radius(np.array([mu]), nu)[0] == flat_punch(nu=nu, mu=mu).c

@@ -26,7 +26,7 @@ from asymptotics.materials import check_c, check_mu, check_nu, gamma_from_nu
 from numeric.core.table import (table_available, table_errors, table_friction_coefficient, table_given_c,
                                 table_least_c, table_stick_radius)
 from numeric.solutions.flat_punch import check_rtol, flat_punch, level_and_rtol
-from numeric.solutions.law import LawRoute, law_friction_coefficient, law_stick_radius
+from numeric.solutions.law import LawRoute, hand_over_ratio, law_stick_radius
 from numeric.solutions.progress import Progress, check_progress, progress_bar
 from numeric.solutions.solution import first_meeting
 
@@ -55,12 +55,11 @@ def _below_table(kind: str, a: np.ndarray, g: np.ndarray, missing: np.ndarray) -
     out = np.full(missing.size, np.nan)
     if kind != "c" or not missing.size or not table_available():
         return out
-    c0 = table_least_c()
-    least = table_given_c(np.full(missing.size, c0), g[missing], quantities=()).mu
+    least = table_given_c(np.full(missing.size, table_least_c()), g[missing], quantities=()).mu
     for k in np.flatnonzero((a[missing] > 0.0) & (a[missing] < least)):
         gamma = float(g[missing[k]])
-        ratio = least[k] / law_friction_coefficient(c0, gamma, 2)  # hand_over_ratio, the table read already
-        out[k] = law_stick_radius(float(a[missing[k]]) / ratio, gamma, 2)
+        # the ratio as flat_punch forms it (one table read per point), so that both give the same c to the last bit
+        out[k] = law_stick_radius(float(a[missing[k]]) / hand_over_ratio(gamma), gamma, 2)
     return out
 
 

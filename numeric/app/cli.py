@@ -275,7 +275,8 @@ def _run_solve(args) -> int:
     if law is not None:
         result.update({"n": law.n, "A": law.A, "C": law.C, "power_law_compliance": law.compliance})
     if args.json:
-        sys.stdout.write(json.dumps({k: _json_value(v) for k, v in result.items()}, allow_nan=False) + "\n")
+        from numeric.app.contact import json_ready
+        sys.stdout.write(json.dumps(json_ready(result), allow_nan=False) + "\n")
         return 0
     material = f"nu = {sol.nu:g} (gamma = {sol.gamma:.9g})" if sol.nu is not None else f"gamma = {sol.gamma:.9g}"
     out = [f"{material}, mu = {sol.mu:.9g}",
@@ -288,10 +289,6 @@ def _run_solve(args) -> int:
     out.append(f"route: {sol.route}; estimated absolute error of {found} and P*: {sol.error:.1e}")
     sys.stdout.write("\n".join(out) + "\n")
     return 0
-
-
-def _json_value(value):
-    return None if isinstance(value, float) and not math.isfinite(value) else value
 
 
 def _parse_range(text: str, name: str) -> list[float]:
@@ -360,7 +357,8 @@ def _run_table(args) -> int:
 
 def _format_rows(rows: list[dict], fmt: str) -> str:
     if fmt == "json":
-        return json.dumps([{k: _json_value(v) for k, v in r.items()} for r in rows], indent=1, allow_nan=False) + "\n"
+        from numeric.app.contact import json_ready
+        return json.dumps(json_ready(list(rows)), indent=1, allow_nan=False) + "\n"
     buffer = io.StringIO()
     writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
     writer.writeheader()

@@ -149,7 +149,7 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
     """mu for stick half-width c = 1 - gap at ``level``; the error (formed when first read) is the shift of mu to the
     partner resolution (one degree lower), from one evaluation of its eigen functional (``partner_shift_theta``).
     ValueError below ``C_SMALLEST`` (less ``C_SMALLEST_SLACK``)."""
-    if c < (1.0 - C_SMALLEST_SLACK) * C_SMALLEST:
+    if c < C_SOLVED_MIN:
         raise ValueError(f"c = {c!r} is below {C_SMALLEST:g}, outside the solver's range (first-order law: "
                          "mu/gamma = K(c)/K'(c))")
     res = PLANE_LEVELS[level]
@@ -241,6 +241,8 @@ C_SMALLEST = 1e-5
 #: the given-c solves may land below C_SMALLEST by the rounding of the steps toward it (6e-9 relative measured at
 #: nu = 0.49): they are solved down to C_SMALLEST (1 - C_SMALLEST_SLACK).
 C_SMALLEST_SLACK = 1e-6
+#: The least stick half-width solved for: C_SMALLEST less its slack.
+C_SOLVED_MIN = (1.0 - C_SMALLEST_SLACK) * C_SMALLEST
 
 
 #: Given mu, 1 - c below this (2^-40 = 9.1e-13: c = 1 - 2^-40 is a double and gives this gap back exactly) is
@@ -292,8 +294,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
     res = PLANE_LEVELS[level]
     theta = math.atan(mu * gamma)
     found = stick_width_guess(theta, gamma)
-    smallest = (1.0 - C_SMALLEST_SLACK) * C_SMALLEST
-    if found is not None and found[0] >= smallest:
+    if found is not None and found[0] >= C_SOLVED_MIN:
         c, gap, guess = found
         layout = [res]  # the steps stay in the layout the first solve chose (a pole of G near one step is near all)
 
@@ -318,7 +319,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
 
             return PlaneSolve(fine, DeferredError(estimate), level)
     c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]
-    if c < smallest:
+    if c < C_SOLVED_MIN:
         raise ValueError(f"mu = {mu:.6g} is too small at gamma = {gamma:.6g}: the stick half-width c ~ {c:.2g} lies "
                          f"below {C_SMALLEST:g}, outside the solver's range (first-order law: c ~ 4 exp(-pi gamma/(2 mu)))")
     largest = gap_max(gamma)

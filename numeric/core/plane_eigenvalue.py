@@ -33,12 +33,12 @@ from numeric.core.eigenvalue import carried_along_tangent, newton_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
-from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocationSystem, PlaneOperators, linearised_system,
-                                          plane_collocation_system)
+from numeric.core.plane_operators import (BALANCE_GAMMA, LinearisedPlaneSystem, PlaneCollocationSystem, PlaneOperators,
+                                          linearised_system, plane_collocation_system)
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
            "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
-           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "theta_rounding"]
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "BALANCED_ROUNDING", "theta_rounding"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
@@ -46,13 +46,16 @@ THETA_MAX = HALF_PI - 1e-9
 ALPHA_TOLERANCE = 1e-12
 """Newton in theta stops when a step is below this, relative."""
 THETA_ROUNDING = 5e-13
-"""Scale of ``theta_rounding``."""
+"""Scale of ``theta_rounding`` on the plain system (absolute)."""
+BALANCED_ROUNDING = 3e-11
+"""Scale of ``theta_rounding`` on the balanced system (relative to theta)."""
 
 
-def theta_rounding(c: float) -> float:
-    """The rounding scatter of a given-c solve's theta, absolute: ``THETA_ROUNDING`` c^-0.4.
+def theta_rounding(c: float, gamma: float, theta: float) -> float:
+    """The rounding scatter of a given-c solve's theta, absolute: ``THETA_ROUNDING`` c^-0.4 where gamma >=
+    ``BALANCE_GAMMA``, ``BALANCED_ROUNDING`` theta c^-0.6 below (theta the solve's, or its guess).
 
-    The eigen functional's rounding is absolute in theta, not relative: as nu -> 1/2 (gamma -> 0, theta ~ gamma^2
+    On the plain system the eigen functional's rounding is absolute in theta: as nu -> 1/2 (gamma -> 0, theta ~ gamma^2
     K(c)/K'(c)) the equilibrated system's condition grows like 1/gamma (1.9e12 at nu = 0.3, 8.7e13 at 0.499, c = 0.5;
     scaling the tangential rows, or Ruiz's equilibration, does not lower it) and G's scatter with it (6e-14 at nu = 0.3,
     1.5e-11 at 0.499). Measured: the spread (max - min) of theta over seven starts 1e-9 ... 1e-7 off, at levels 0-4,
@@ -60,8 +63,18 @@ def theta_rounding(c: float) -> float:
     nu >= 0.45 1e-14 ... 3.6e-12, growing toward small c like c^-0.4 and with the level (degree); this envelope, with
     the relative floor 1e-10, lies above the spread of mu at 152 of 154 points where that spread exceeds 3e-11 (median
     5.9x where it decides); the two below are nu = 0.47, c = 0.99 at levels 3 and 4 (an isolated spike, 2.7e-12 there
-    against 5e-13 at nu = 0.465 and 0.475). It floors the error estimate, and Newton on the linearised system stops
-    at a step below it (taking that step: the root is then within the step's square, not within the envelope)."""
+    against 5e-13 at nu = 0.465 and 0.475).
+
+    The cause was the normal rows' near-null combination (``numeric.core.plane_operators.plane_collocation_system``):
+    balanced (gamma < ``BALANCE_GAMMA``) the scatter is relative in theta. Measured as above at nu in {0.45, 0.47,
+    0.488, 0.495, 0.499}: spread / theta 7e-13 ... 3e-11 at c >= 0.1, up to 2e-10 at c = 0.01, 1e-9 at 1e-3, 2e-9 at
+    1e-4 (level 4; growing with the level and toward small c, not with 1/gamma: at c = 0.5 2e-12 ... 3e-11 from
+    nu = 0.45 to 0.499, where the plain system's grew to 1.5e-7); the envelope 3e-11 c^-0.6 lies above all 200 points.
+
+    It floors the error estimate, and Newton on the linearised system stops at a step below it (taking that step: the
+    root is then within the step's square, not within the envelope)."""
+    if gamma < BALANCE_GAMMA:
+        return BALANCED_ROUNDING * theta * c**-0.6
     return THETA_ROUNDING * c**-0.4
 
 
@@ -102,7 +115,7 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     if not derivative:
         return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
-    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned)
+    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned, balance=system.balance)
     dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
     dG = system.functional_derivative(theta) @ z - y @ (dD @ z)
     return system, z, float(l @ z), float(dG)
@@ -136,13 +149,13 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     """theta for stick half-width c = 1 - gap from a close guess: Newton (``numeric.core.eigenvalue.newton_theta``) on
     the system linearised in the basis exponent about the guess (``LinearisedPlaneSystem``), its difference step the
     larger of ``EXPONENT_STEP`` and ``spread`` (the guess's expected relative error: the secant then spans the root);
-    again about the result while Newton moved theta by more than ``OUTER_TOLERANCE`` (relative) and ``theta_rounding(c)``
+    again about the result while Newton moved theta by more than ``OUTER_TOLERANCE`` (relative) and ``theta_rounding``
     (absolute: as nu -> 1/2 theta's rounding scatter exceeds 1e-7 relative, and rounds would chase it). Raises SolverError if that takes
     more than ``max_outer`` rounds or Newton does not converge (the caller falls back to ``plane_given_c``)."""
     ops = plane_operators_at(c, gap, res)
     theta = min(theta_guess, THETA_MAX)
     step = max(EXPONENT_STEP, spread)
-    noise = theta_rounding(c)
+    noise = theta_rounding(c, gamma, theta)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
         root = newton_theta(system, theta, conditioning=True, noise=noise)

@@ -37,14 +37,15 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
+import scipy.linalg as sla
 
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
-from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
+from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points, locate,
                                        element_families)
 from numeric.core.quadrature import gauss_legendre
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
@@ -57,7 +58,16 @@ true exponent (with beta held at 1e-3 instead, the functional near c_max at nu =
 exponent). The eigenvalue does not depend on the mode's column (at the root its amplitude is 0), only the smoothness
 of G near the root does; the limit mu -> inf is taken by extrapolation (``numeric.solutions.plane_solver``)."""
 
-__all__ = ["MODE_BETA_MIN", "PlaneOperators", "Transforms", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
+BALANCE_GAMMA = 0.1
+"""Below this gamma (nu > 4/9) the normal rows are balanced (``plane_collocation_system``; measured there)."""
+BALANCE_POINT = 1e-3
+"""The balancing (T) row's point lies this fraction of the stick end's length before c."""
+NEAR_NULL_STEPS = 4
+"""Inverse-iteration steps for the normal rows' near-null combination (each gains ~1e-2, the ratio of the two least
+singular values of their p block)."""
+
+__all__ = ["MODE_BETA_MIN", "BALANCE_GAMMA", "BALANCE_POINT", "NEAR_NULL_STEPS", "PlaneOperators", "Transforms", "Balance",
+           "near_null_balance", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
            "LinearisedPlaneSystem", "linearised_system"]
 
 
@@ -120,6 +130,16 @@ class PlaneOperators:
             family_values(fam, pts.s[owned])
         self._singular = np.flatnonzero(lay.kind != PLAIN)
         self._geometry: dict[int, CauchyGeometry] = {}  # per singular element, formed at the first exponent
+        self._balance_point: PlaneOperators | None = None  # ``balance_transforms``'s, formed when first asked for
+
+    def balance_transforms(self, alpha: float) -> Transforms:
+        """The transforms at the balancing (T) row's point (``BALANCE_POINT``), with the generic mode's."""
+        if self._balance_point is None:
+            lay = self.layout
+            before = BALANCE_POINT * float(lay.length[lay.stick_end])  # c - x, formed from 1 - x (c = 1 rounds x)
+            self._balance_point = PlaneOperators(lay, locate(lay, np.array([lay.c - before]),
+                                                             offset_from_one=np.array([-(lay.gap + before)])))
+        return self._balance_point.transforms(alpha)
 
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
@@ -188,6 +208,43 @@ def normal_factor(theta: float) -> float:
 
 
 @dataclass(frozen=True, slots=True, eq=False)
+class Balance:
+    """The reflection of the normal rows (N) that isolates their near-null combination, and where it lands.
+
+    ``rows``: the (N) rows reflected (all but the pins); ``w``: the unit Householder vector over them, I - 2 w w^T
+    taking the near-null combination u of those rows (u^T [their p columns] ~ 0) to one row, ``row``, which then holds
+    the balancing (T) equation instead (``plane_collocation_system``)."""
+
+    rows: np.ndarray
+    w: np.ndarray
+    row: int
+
+
+def near_null_balance(p_block: np.ndarray, rows: np.ndarray) -> Balance:
+    """The ``Balance`` of the normal rows ``rows`` from their p columns ``p_block`` (square: the pins' rows and columns
+    left out): u by inverse iteration (``NEAR_NULL_STEPS`` steps on the LU of the column-scaled block; column scaling
+    does not move a left null vector), the reflection about its largest component."""
+    scaled = p_block / np.maximum(p_block.max(axis=0), -p_block.min(axis=0))
+    lu = sla.lu_factor(scaled, check_finite=False)
+    u = np.ones(rows.size)
+    for _ in range(NEAR_NULL_STEPS):
+        u = sla.lu_solve(lu, u, trans=1, check_finite=False)
+        u /= np.linalg.norm(u)
+    k = int(np.argmax(np.abs(u)))
+    v = u.copy()
+    v[k] += math.copysign(1.0, u[k])
+    return Balance(rows, v / np.linalg.norm(v), int(rows[k]))
+
+
+def _reflect(arrays: tuple[np.ndarray, ...], balance: Balance) -> None:
+    """Apply the balance's reflection to the rows ``balance.rows`` of each array, in place."""
+    w, rows = balance.w, balance.rows
+    for a in arrays:
+        part = a[rows]
+        a[rows] = part - 2.0 * np.multiply.outer(w, w @ part)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
 class PlaneCollocationSystem:
     """D(theta) = [stick | cos(theta) normal + sin(theta) shear] (+ the mode's stick part in the last column).
 
@@ -206,6 +263,7 @@ class PlaneCollocationSystem:
     slip_columns: np.ndarray
     integrals: np.ndarray   # int_0^1 of every basis function (layout order)
     pinned: bool            # whether p's singular family on the stick end is pinned to 0 (``plane_collocation_system``)
+    balance: Balance | None = None  # the normal rows' near-null combination replaced (``plane_collocation_system``)
 
     @property
     def n_stick(self) -> int:
@@ -245,8 +303,8 @@ class PlaneCollocationSystem:
         return np.zeros(self.rhs.size)
 
 
-def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pinned: bool | None = None
-                             ) -> PlaneCollocationSystem:
+def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pinned: bool | None = None,
+                             balance: Balance | None = None) -> PlaneCollocationSystem:
     """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
 
     The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
@@ -263,7 +321,24 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     degree-24 solution and p at x = c from 7e-9 to 8e-12 (nu = -1/2, c = 0.93: 3e-10 to 3e-13 in mu, 9e-7 to 1e-11 in
     p). Below alpha = 0.04 they stay free: pinned there, mu between degrees 18 and 24 differed 50 times more at
     nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5); between 0.04 and 1/4 (free until this was measured) pinned p at
-    x = c came from up to 2.9e-9 to 3.1e-10 of degree 28."""
+    x = c came from up to 2.9e-9 to 3.1e-10 of degree 28.
+
+    Below ``BALANCE_GAMMA`` the system is balanced. The rows count N (N) + (T) + (P), but the p block of (N) is square
+    and nearly singular (H p = 0 has the punch's own solution (1 - x^2)^(-1/2) in the continuum, fixed by (P)): its
+    least singular value is ~2e-10 (equilibrated), its left singular vector u a combination of (N) rows that in the
+    discrete system only constrains q, through gamma q. As gamma -> 0 that makes a near-null vector of the whole system
+    (least singular value 3e-11, 7e-12, 4.5e-13 at gamma = 0.29, 0.04, 0.002, c = 1/2; concentrated on the stick shear)
+    and the rounding of G absolute in theta, so that mu's relative error grew like 1/gamma^2 (3.4e-9 at nu = 0.489).
+    So the (N) rows (less the pins) are reflected (Householder, ``near_null_balance``: u by inverse iteration on the p
+    block) to put u's combination in one row, which becomes (T) at one more stick point (``BALANCE_POINT`` before c):
+    at gamma = 0 the system then falls into two square blocks, p from (N) and (P), q and the mode from (T). Measured:
+    the rounding scatter of theta becomes relative (``numeric.core.plane_eigenvalue.theta_rounding``), and mu at
+    nu = 0.45 ... 0.489 comes within 1e-10 of the small-gamma series (8.7e-11 at c = 0.05); the stresses stay right
+    down to gamma = 1e-8 (levels 2 and 4 within 4e-11 of the largest value). Above ``BALANCE_GAMMA`` the plain system
+    is kept: there the balanced one's discretisation error was larger (2.8e-11 against 1.3e-12 at nu = 0, c = 0.1;
+    its extra row's place matters: 2.6e-11 at 0.77 c against 7.5e-13 at 0.1 c, nu = 0.3, c = 1/2), and its rounding
+    no smaller. The two assemblies of a difference quotient share one ``balance`` (the reflection is not smooth in
+    alpha)."""
     lay, pts = ops.layout, ops.points
     T = ops.transforms(alpha)
     stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
@@ -299,12 +374,30 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     rhs = np.zeros(n)
     rhs[-1] = 1.0
     pin = pins_stick_pressure(alpha, plane=True) if pinned is None else pinned
+    slots = pin_rows = np.zeros(0, dtype=int)
     if pin:
         e = lay.stick_end
         slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns
         own = np.flatnonzero(pts.owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
-        pin_to_zero(stick, slots, own[pinned_rows(own.size, slots.size)], (normal, shear, mode_stick, rhs))
-    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin)
+        pin_rows = own[pinned_rows(own.size, slots.size)]
+        pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
+    if balance is None and gamma < BALANCE_GAMMA:
+        rows = np.setdiff1d(np.arange(N), pin_rows)
+        p_columns = np.setdiff1d(np.arange(ns), slots)
+        balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1), rows)
+    if balance is not None:
+        _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
+        B = ops.balance_transforms(alpha)
+        r = balance.row
+        stick[r, :ns] = -gamma * B.values[0, sc]
+        stick[r, ns:] = B.odd[0, sc]
+        stick[r, slots] = 0.0
+        normal[r] = 0.0
+        shear[r, :nl] = B.odd[0, lc] / gamma
+        shear[r, -1] = -B.mode_slip[1][0]
+        mode_stick[r] = B.mode_stick[1][0]
+    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
+                                  balance)
 
 
 def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta: float) -> PlaneCollocationSystem:
@@ -312,7 +405,7 @@ def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta:
     return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, base.stick + delta * rate.stick,
                                   base.normal + delta * rate.normal, base.shear + delta * rate.shear,
                                   base.mode_stick + delta * rate.mode_stick, base.rhs, base.stick_columns,
-                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned)
+                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned, base.balance)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -357,10 +450,10 @@ class LinearisedPlaneSystem:
 def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
     """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
     base = plane_collocation_system(ops, gamma, alpha)
-    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned)
+    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned, balance=base.balance)
     rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
                                   (other.normal - base.normal) / step, (other.shear - base.shear) / step,
                                   (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),
                                   base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step,
-                                  base.pinned)
+                                  base.pinned, base.balance)
     return LinearisedPlaneSystem(base, rate)

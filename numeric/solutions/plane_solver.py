@@ -4,10 +4,14 @@ Each level is a ``PlaneResolution`` (``PLANE_LEVELS``); ``error`` is the differe
 the same problem one polynomial degree lower (``plane_partner``; its root from one evaluation of its eigen
 functional at the level's root, over the level's slope), at least ``ROUNDING_FLOOR`` times the
 value (the scatter of mu between degrees 20 ... 28, where the discretisation error is far below it,
-measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]), and at least theta's absolute
-rounding scatter ``theta_rounding(c)`` turned into mu or c: as nu -> 1/2 theta ~ gamma^2 falls below 1e-3 and that
-scatter, not the discretisation, limits the relative accuracy (measured: 2.6e-10 ... 1.3e-7 in mu at nu = 0.47 ...
-0.499; ``numeric.core.plane_eigenvalue.theta_rounding``).
+measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]), and at least theta's
+rounding scatter ``theta_rounding`` turned into mu or c. On the plain system that scatter was absolute in theta, and
+as nu -> 1/2 (theta ~ gamma^2) it limited mu's relative accuracy (2.6e-10 ... 1.3e-7 at nu = 0.47 ... 0.499); below
+``BALANCE_GAMMA`` (nu > 4/9) the system is balanced (``numeric.core.plane_operators.plane_collocation_system``) and it
+is relative: measured against the small-gamma series through level-3 nodes (``numeric.solutions.plane_small_gamma``,
+an independent route from solves at gamma >= 0.06) at nu = 0.45 ... 0.489, c = 0.05, 0.3, 0.5, 0.9, 0.97, level 2
+is within 9.7e-11 (c = 0.05) and 2.2e-11 (c >= 0.3), where the plain system was up to 3.4e-9 off (nu = 0.489,
+c = 0.05).
 
 The estimate is a solve at the partner resolution, so it is formed when ``error`` is first read
 (``numeric.solutions.solution.DeferredError``).
@@ -159,7 +163,7 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
     def estimate() -> float:
         shift = partner_shift_theta(c, gap, gamma, solution, plane_partner(solution.layout.resolution))
         t = fine.theta
-        rounding = fine.mu * theta_rounding(c) / (math.sin(t) * math.cos(t))  # d mu / mu = d theta / (sin cos)
+        rounding = fine.mu * theta_rounding(c, gamma, t) / (math.sin(t) * math.cos(t))  # d mu / mu = d theta / (sin cos)
         return max(abs(_mu(t + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu, rounding)
 
     return PlaneSolve(fine, DeferredError(estimate), level)
@@ -305,7 +309,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
 
         try:
             last, slope, remaining = guided_steps(theta, c, gap, guess.slope, step, lambda s: s.theta,
-                                                  theta_noise=max(THETA_SCATTER * theta, theta_rounding(c)))
+                                                  theta_noise=max(THETA_SCATTER * theta, theta_rounding(c, gamma, theta)))
         except SolverError:
             last = None
         if last is not None:
@@ -315,7 +319,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
             def estimate() -> float:
                 lay = solution.layout
                 shift = partner_shift_theta(lay.c, lay.gap, gamma, last, plane_partner(lay.resolution))
-                return _gap_error(fine, (abs(shift) + theta_rounding(lay.c)) / abs(slope) + remaining)
+                return _gap_error(fine, (abs(shift) + theta_rounding(lay.c, gamma, theta)) / abs(slope) + remaining)
 
             return PlaneSolve(fine, DeferredError(estimate), level)
     c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]

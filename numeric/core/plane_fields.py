@@ -91,17 +91,6 @@ class PlaneField:
     def mu(self) -> float:
         return math.inf if self.theta >= 0.5 * math.pi else math.tan(self.theta) / self.gamma
 
-    def detached(self) -> PlaneField:
-        """The same field without its solution (the system, its transforms and LU: 10-30 MB at 200-1200 unknowns),
-        for keeping many (``numeric.solutions.plane_small_gamma``): p, q, the slip and the load stay available,
-        ``solution`` is None."""
-        out = PlaneField.__new__(PlaneField)
-        out.__dict__.update(self.__dict__)
-        out.__dict__["load"] = self.load
-        out.solution = None
-        out._last_points = None
-        return out
-
     @cached_property
     def load(self) -> float:
         """int_{-1}^{1} p dx (1 by the normalisation row, to rounding)."""
@@ -332,21 +321,18 @@ def weighted_tail_integrals(field: PlaneField, x: np.ndarray, weight: Weight) ->
 
 @dataclass(frozen=True, slots=True, eq=False)
 class FieldCombination:
-    """p = sum_i p_weights[i] p_i, q = sum_i q_weights[i] q_i and u = sum_i q_weights[i] u_i of solver fields, with
-    Coulomb's law exact on the slip zones |x| > c: ``coulomb`` "q" sets q = mu sgn(x) p there from the combined p,
-    "p" sets p = |q|/mu from the combined q. Where the fields are linear in a parameter (1/(mu gamma) near the limit
-    mu -> inf, ``numeric.solutions.plane_near_limit``; gamma^2 at one c for small gamma,
-    ``numeric.solutions.plane_small_gamma``) this is their interpolation. ``unresolved``: an interval of |x| about c
-    where the combination does not hold (the fields' stick-slip points differ), refused with ValueError (``reason``
-    says why), or None. The weighted integrals of p and q (the cylinder's, ``tail_integrals``) are linear too."""
+    """p = sum_i weights[i] p_i, q = sum_i weights[i] q_i and u = sum_i weights[i] u_i of solver fields, with Coulomb's
+    law exact on the slip zones |x| > c: p = |q|/mu there from the combined q. Where the fields are linear in a
+    parameter (1/(mu gamma) near the limit mu -> inf, ``numeric.solutions.plane_near_limit``) this is their
+    interpolation. ``unresolved``: an interval of |x| about c where the combination does not hold (the fields'
+    stick-slip points differ), refused with ValueError (``reason`` says why), or None. The weighted integrals of p and
+    q (the cylinder's, ``tail_integrals``) are linear too."""
 
     fields: tuple[PlaneField, ...]
-    p_weights: tuple[float, ...]
-    q_weights: tuple[float, ...]
+    weights: tuple[float, ...]
     mu: float
     c: float
     gap: float
-    coulomb: str
     unresolved: tuple[float, float] | None = None
     reason: str = ""
 
@@ -361,34 +347,29 @@ class FieldCombination:
                              f"c = {self.c!r}, {self.reason}")
 
     def pressure_shear(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """p and q at -1 <= x <= 1, combined, and Coulomb's law on the slip zones (``coulomb``)."""
+        """p and q at -1 <= x <= 1, combined, and Coulomb's law on the slip zones."""
         x = np.asarray(x, dtype=float)
         self.check(np.abs(x).ravel())
         p, q = np.zeros(x.shape), np.zeros(x.shape)
         edge = np.abs(x) == 1.0  # (1 - x)^(alpha - 1/2): every field (mu < inf) is infinite there, weights of both signs
         inner = np.where(edge, 0.0, x)
-        for f, wp, wq in zip(self.fields, self.p_weights, self.q_weights):
+        for f, w in zip(self.fields, self.weights):
             pf, qf = f.pressure_shear(inner)
-            p, q = p + wp * pf, q + wq * qf
+            p, q = p + w * pf, q + w * qf
         p, q = np.where(edge, math.inf, p), np.where(edge, np.copysign(math.inf, x), q)
-        slipping = np.abs(x) > self.c
-        if self.coulomb == "p":
-            p = np.where(slipping, np.abs(q) / self.mu, p)
-        else:
-            q = np.where(slipping, self.mu * np.sign(x) * p, q)
-        return p, q
+        return np.where(np.abs(x) > self.c, np.abs(q) / self.mu, p), q
 
     def slip(self, x: np.ndarray) -> np.ndarray:
         """u at -1 <= x <= 1, combined (0 on the stick zone)."""
         x = np.asarray(x, dtype=float)
         self.check(np.abs(x).ravel())
-        return sum(w * f.slip(x) for f, w in zip(self.fields, self.q_weights))
+        return sum(w * f.slip(x) for f, w in zip(self.fields, self.weights))
 
     def tail_integrals(self, x: np.ndarray, weight: Weight) -> tuple[np.ndarray, np.ndarray]:
         """``weighted_tail_integrals`` of the combination (linear in the fields; on the slip zones the fields' own q,
         which the combination matches to its accuracy)."""
         tp, tq = 0.0, 0.0
-        for f, wp, wq in zip(self.fields, self.p_weights, self.q_weights):
+        for f, w in zip(self.fields, self.weights):
             fp, fq = weighted_tail_integrals(f, x, weight)
-            tp, tq = tp + wp * fp, tq + wq * fq
+            tp, tq = tp + w * fp, tq + w * fq
         return tp, tq

@@ -9,8 +9,8 @@ The form was found from the solver (``derivations/plane_strain.md``, ``tests/tes
 and its change follows 1/L^2 (fitted through c = 1e-3 and 1e-4 it predicts the solver's r at 1e-5 to 2e-7 ...
 5e-5, at 1e-6 and 1e-7, solved directly, to 2e-7 ... 2e-5). a and b are fitted here through the solver at
 ``LAW_NODES[1:]`` = 1e-4, 1e-5 (the law is continuous with the solver at 1e-5), once per gamma and level; below
-``SMALL_GAMMA`` through the small-gamma series' r at those c (``numeric.solutions.plane_small_gamma``), as the solver
-route there takes mu from it.
+``SMALL_GAMMA`` through the small-gamma series' r at those c (``numeric.solutions.plane_small_gamma``: r without the
+cancellation of mu/mu_1 - 1 ~ gamma^2 r, which at tiny gamma falls below the solver's rounding).
 Its error: the same fit through ``LAW_NODES[:2]`` = 1e-3, 1e-4 moves the limit a by da; the relative error of
 mu is taken as ``LAW_ERROR_FACTOR`` gamma^2 |da| (measured, against the solver at c = 1e-6 and 1e-7: the actual
 error is 1/3 ... 1/240 of this bound, ``derivations/plane_strain.md``), plus the solver's rounding floor.
@@ -39,7 +39,7 @@ from scipy import optimize
 
 from asymptotics.plane import mu_over_gamma_plane, pressure_full_slip
 
-from numeric.solutions.plane_small_gamma import SMALL_GAMMA, gamma_series, series_nodes
+from numeric.solutions.plane_small_gamma import SMALL_GAMMA, gamma_series
 from numeric.solutions.plane_solver import C_SMALLEST, ROUNDING_FLOOR, solve_given_c
 
 __all__ = ["LAW_NODES", "LAW_ERROR_FACTOR", "OUTER_FACTOR", "LawFit", "law_fit", "law_friction_coefficient",
@@ -77,7 +77,7 @@ def _ratio(c: float, gamma: float, level: int) -> float:
     a rounding that grows like 1/gamma^2, and r took it times 1/gamma^2 more: the law was 5 % off at nu = 0.4999999
     and its stick width not bracketed at nu = 0.499999999999)."""
     if gamma < SMALL_GAMMA:
-        series = gamma_series(c, 1.0 - c, level, series_nodes(1.0 - c)[0])
+        series = gamma_series(c, 1.0 - c, level)
         return series.correction(gamma) / series.first_order
     mu = solve_given_c(c, 1.0 - c, gamma, level).field.mu
     return (mu / (gamma * float(mu_over_gamma_plane(c))) - 1.0) / gamma**2

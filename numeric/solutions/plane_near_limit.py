@@ -40,4 +40,4 @@ def near_limit_field(mu: float, gamma: float, near: tuple[tuple[float, float, Pl
     width = NEAR_ZONE * (c - c_first)
     reason = (f"where the solution at mu = {mu:g} (mu gamma beyond 1e6) is not resolved: the stresses are linear in "
               "1/(mu gamma) only away from it")
-    return FieldCombination((f1, f2), (w1, w2), (w1, w2), mu, c, gap, "p", (c_first - width, c + width), reason)
+    return FieldCombination((f1, f2), (w1, w2), mu, c, gap, (c_first - width, c + width), reason)

@@ -225,7 +225,7 @@ class PlanePowerLawSolution:
         if np.any(inside):
             if isinstance(f, FieldCombination):
                 f.check(ax)
-                out[inside] = sum(w * self._accumulated(g, ax[inside]) for g, w in zip(f.fields, f.q_weights))
+                out[inside] = sum(w * self._accumulated(g, ax[inside]) for g, w in zip(f.fields, f.weights))
             elif isinstance(f, PlaneField):
                 out[inside] = self._accumulated(f, ax[inside])
             else:

@@ -35,9 +35,8 @@ from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_max, gap_max_relative_error
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
-from numeric.solutions.plane_small_gamma import (DIRECT_FIELDS_GAMMA, ERROR_FACTOR, SERIES_GAP_MIN, SMALL_GAMMA,
-                                                 UnresolvedField, friction_slope, series_nodes, small_gamma_field,
-                                                 small_gamma_friction, small_gamma_stick_width)
+from numeric.solutions.plane_small_gamma import (DIRECT_FIELDS_GAMMA, SERIES_GAP_MIN, SMALL_GAMMA, UnresolvedField,
+                                                 friction_slope)
 from numeric.solutions.flat_punch import check_level, check_rtol
 from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORDER_GAMMA, FIRST_ORDER_R_MAX,
                                             FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
@@ -122,11 +121,9 @@ class StripPunchSolution:
         layout), ...": the level's layout was near a pole of the eigen functional, ``numeric.solutions.plane_solver.
         CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
-        "full stick to within ..." (1 - c < 2^-40 at small gamma), "small-gamma series ..." (gamma < 0.02, nu near
-        1/2: mu and the stresses from series in gamma^2 through the solver at larger gamma,
-        ``numeric.solutions.plane_small_gamma``), "near full stick at small gamma ..." (there, 1 - c < 1e-8: the solver
-        at gamma itself or the first-order law; stresses not computed below gamma = 1e-3) or "c = ... is c_max to
-        rounding: ..." (given c within 4 ulp of c_max: the slip limit).
+        "full stick to within ..." (1 - c < 2^-40 at small gamma), "near full stick at small gamma ..." (gamma < 0.02,
+        1 - c < 1e-8: the solver or the first-order law; stresses not computed below gamma = 1e-3) or "c = ... is c_max
+        to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
 
@@ -201,40 +198,27 @@ def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError
                               fine.residual, fine)
 
 
-def _small_gamma_route(level: int, gap: float) -> str:
-    nodes, check = series_nodes(gap)
-    return (f"small-gamma series (gamma < {SMALL_GAMMA:g}): mu/gamma = K(c)/K'(c) + gamma^2 r, r of degree 5 in "
-            f"gamma^2 through solver level {level} at gamma = {', '.join(f'{g:.3g}' for g in nodes)} (error: "
-            f"{ERROR_FACTOR:g}x its distance from the series through {', '.join(f'{g:.3g}' for g in check)}); p, "
-            "q/gamma and u/gamma the same interpolation of those solves' fields, q = mu p on the slip zones")
-
-
 def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, error: float | DeferredError,
               solved: PlaneField | None, level: int) -> StripPunchSolution:
-    """Small gamma and 1 - c below the series' reach (``SERIES_GAP_MIN``): ``solved`` the solver's field at gamma
-    itself (mu and c with its error, which counts theta's rounding), else (gamma < ``FIRST_ORDER_GAMMA``, or given mu
-    where the solver's secant in c did not converge) the first-order law; the stresses of the solve where gamma >=
-    ``DIRECT_FIELDS_GAMMA``, else not computed."""
+    """Small gamma (< ``SMALL_GAMMA``) and 1 - c < ``SERIES_GAP_MIN``: ``solved`` the solver's field at gamma
+    itself (mu and c with its error), else (gamma < ``FIRST_ORDER_GAMMA``, or given mu where the solver's secant in c
+    did not converge) the first-order law; the stresses of the solve where gamma >= ``DIRECT_FIELDS_GAMMA``, else not
+    computed."""
     how = (f"solver level {level} at gamma itself" if solved is not None else
            f"the first-order law mu/gamma = K(c)/K'(c) (error {FIRST_ORDER_R_MAX:g} gamma^2 relative in mu)")
-    route = (f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}, beyond the "
-             f"small-gamma series): mu and c from {how}")
+    route = f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}): mu and c from {how}"
     if solved is not None and gamma >= DIRECT_FIELDS_GAMMA:
         return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; its stresses", solved.residual, solved)
     reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} < {DIRECT_FIELDS_GAMMA:g} with "
-              f"1 - c = {gap:.3g} < {SERIES_GAP_MIN:g}: the small-gamma series does not reach so near c = 1, and the "
-              "solver's shear carries a rounding amplified by 1/gamma^2 there")
+              f"1 - c = {gap:.3g} < {SERIES_GAP_MIN:g}: there the solver's shear and slip carry a rounding of up to "
+              "~1e-7 relative")
     return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; stresses not computed", 0.0,
                               UnresolvedField(reason))
 
 
-def _small_gamma_given_c(nu: float | None, gamma: float, c: float, level: int) -> StripPunchSolution:
-    """Given c at gamma < SMALL_GAMMA: the series (mu and the fields), or near c = 1 ``_near_one``."""
+def _near_one_given_c(nu: float | None, gamma: float, c: float, level: int) -> StripPunchSolution:
+    """Given c at gamma < SMALL_GAMMA and 1 - c < SERIES_GAP_MIN (``_near_one``)."""
     gap = 1.0 - c
-    if gap >= SERIES_GAP_MIN:
-        mu, error = small_gamma_friction(c, gap, gamma, level)
-        return StripPunchSolution(nu, gamma, mu, c, gap, error, _small_gamma_route(level, gap), 0.0,
-                                  small_gamma_field(c, gap, gamma, mu, level))
     if gamma < FIRST_ORDER_GAMMA:
         mu = gamma / elliptic_ratio(c, gap)
         return _near_one(nu, gamma, mu, c, gap, FIRST_ORDER_R_MAX * gamma * gamma * mu, None, level)
@@ -242,14 +226,8 @@ def _small_gamma_given_c(nu: float | None, gamma: float, c: float, level: int) -
     return _near_one(nu, gamma, solve.field.mu, c, gap, solve.error, solve.field, level)
 
 
-def _small_gamma_given_mu(nu: float | None, gamma: float, mu: float, level: int) -> StripPunchSolution:
-    """Given mu at gamma < SMALL_GAMMA: Newton on the series (``small_gamma_stick_width``), or near c = 1
-    ``_near_one``."""
-    found = small_gamma_stick_width(mu, gamma, level)
-    if found is not None:
-        c, gap, error = found
-        return StripPunchSolution(nu, gamma, mu, c, gap, error, _small_gamma_route(level, gap), 0.0,
-                                  small_gamma_field(c, gap, gamma, mu, level))
+def _near_one_given_mu(nu: float | None, gamma: float, mu: float, level: int) -> StripPunchSolution:
+    """Given mu at gamma < SMALL_GAMMA where the first-order law puts 1 - c below SERIES_GAP_MIN (``_near_one``)."""
     if gamma >= FIRST_ORDER_GAMMA:
         try:
             solve = solve_given_mu(mu, gamma, level)
@@ -347,8 +325,8 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
         if 1.0 - c < (1.0 - ABOVE_C_MAX) * largest:
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
-        if g < SMALL_GAMMA:
-            return _small_gamma_given_c(nu, g, c, level)
+        if g < SMALL_GAMMA and 1.0 - c < SERIES_GAP_MIN:
+            return _near_one_given_c(nu, g, c, level)
         solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
@@ -373,8 +351,8 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
-    if g < SMALL_GAMMA:
-        return _small_gamma_given_mu(nu, g, mu, level)
+    if g < SMALL_GAMMA and float(slip_width_first_order(mu, g)) < SERIES_GAP_MIN:
+        return _near_one_given_mu(nu, g, mu, level)
     solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 

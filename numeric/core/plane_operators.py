@@ -86,15 +86,31 @@ class Transforms:
     mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_integral: float
+def _with_balance_point(lay: PlaneLayout, points: PointSet) -> PointSet:
+    """``points`` and, after them, the balancing (T) row's point ``BALANCE_POINT`` of the stick end's length before c
+    (its offsets formed from 1 - x: next to c = 1 a double x rounds onto c)."""
+    before = BALANCE_POINT * float(lay.length[lay.stick_end])
+    extra = locate(lay, np.array([lay.c - before]), offset_from_one=np.array([-(lay.gap + before)]))
+    return PointSet(*(np.concatenate([getattr(points, name), getattr(extra, name)])
+                      for name in ("anchor", "offset", "x", "owner", "s")))
+
+
 class PlaneOperators:
-    """Transforms of every basis function of a layout at a point set (default: the collocation points).
+    """Transforms of every basis function of a layout at a point set (default: the collocation points, and after them
+    the balancing (T) row's point, ``BALANCE_POINT`` before c: ``n_collocation`` counts the first).
 
     ``transforms(alpha)`` fills in the alpha-dependent families; ``columns(e)`` is element e's slice.
     """
 
     def __init__(self, lay: PlaneLayout, points: PointSet | None = None) -> None:
         self.layout = lay
-        self.points = collocation_points(lay) if points is None else points
+        if points is None:
+            points = collocation_points(lay)
+            self.n_collocation = points.size
+            points = _with_balance_point(lay, points)
+        else:
+            self.n_collocation = points.size
+        self.points = points
         pts = self.points
         sizes = np.array([lay.n_basis(e) for e in range(len(lay))])
         self.starts = np.concatenate([[0], np.cumsum(sizes)]).astype(int)
@@ -130,16 +146,6 @@ class PlaneOperators:
             family_values(fam, pts.s[owned])
         self._singular = np.flatnonzero(lay.kind != PLAIN)
         self._geometry: dict[int, CauchyGeometry] = {}  # per singular element, formed at the first exponent
-        self._balance_point: PlaneOperators | None = None  # ``balance_transforms``'s, formed when first asked for
-
-    def balance_transforms(self, alpha: float) -> Transforms:
-        """The transforms at the balancing (T) row's point (``BALANCE_POINT``), with the generic mode's."""
-        if self._balance_point is None:
-            lay = self.layout
-            before = BALANCE_POINT * float(lay.length[lay.stick_end])  # c - x, formed from 1 - x (c = 1 rounds x)
-            self._balance_point = PlaneOperators(lay, locate(lay, np.array([lay.c - before]),
-                                                             offset_from_one=np.array([-(lay.gap + before)])))
-        return self._balance_point.transforms(alpha)
 
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
@@ -211,19 +217,18 @@ def normal_factor(theta: float) -> float:
 class Balance:
     """The reflection of the normal rows (N) that isolates their near-null combination, and where it lands.
 
-    ``rows``: the (N) rows reflected (all but the pins); ``w``: the unit Householder vector over them, I - 2 w w^T
-    taking the near-null combination u of those rows (u^T [their p columns] ~ 0) to one row, ``row``, which then holds
-    the balancing (T) equation instead (``plane_collocation_system``)."""
+    ``w``: the unit Householder vector over the N rows (0 at the pins'), I - 2 w w^T taking the near-null combination
+    u of those rows (u^T [their p columns] ~ 0) to one row, ``row``, which then holds the balancing (T) equation
+    instead (``plane_collocation_system``)."""
 
-    rows: np.ndarray
     w: np.ndarray
     row: int
 
 
-def near_null_balance(p_block: np.ndarray, rows: np.ndarray) -> Balance:
-    """The ``Balance`` of the normal rows ``rows`` from their p columns ``p_block`` (square: the pins' rows and columns
-    left out): u by inverse iteration (``NEAR_NULL_STEPS`` steps on the LU of the column-scaled block; column scaling
-    does not move a left null vector), the reflection about its largest component."""
+def near_null_balance(p_block: np.ndarray, rows: np.ndarray, n_rows: int) -> Balance:
+    """The ``Balance`` of the normal rows ``rows`` (of ``n_rows``) from their p columns ``p_block`` (square: the pins'
+    rows and columns left out): u by inverse iteration (``NEAR_NULL_STEPS`` steps on the LU of the column-scaled
+    block; column scaling does not move a left null vector), the reflection about its largest component."""
     scaled = p_block / np.maximum(p_block.max(axis=0), -p_block.min(axis=0))
     lu = sla.lu_factor(scaled, check_finite=False)
     u = np.ones(rows.size)
@@ -231,17 +236,18 @@ def near_null_balance(p_block: np.ndarray, rows: np.ndarray) -> Balance:
         u = sla.lu_solve(lu, u, trans=1, check_finite=False)
         u /= np.linalg.norm(u)
     k = int(np.argmax(np.abs(u)))
-    v = u.copy()
-    v[k] += math.copysign(1.0, u[k])
-    return Balance(rows, v / np.linalg.norm(v), int(rows[k]))
+    u[k] += math.copysign(1.0, u[k])
+    w = np.zeros(n_rows)
+    w[rows] = u / np.linalg.norm(u)
+    return Balance(w, int(rows[k]))
 
 
 def _reflect(arrays: tuple[np.ndarray, ...], balance: Balance) -> None:
-    """Apply the balance's reflection to the rows ``balance.rows`` of each array, in place."""
-    w, rows = balance.w, balance.rows
+    """Apply the balance's reflection to the first rows (the (N) rows) of each array, in place."""
+    w = balance.w
     for a in arrays:
-        part = a[rows]
-        a[rows] = part - 2.0 * np.multiply.outer(w, w @ part)
+        part = a[: w.size]
+        part -= np.multiply.outer(2.0 * w, w @ part)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -339,37 +345,38 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     its extra row's place matters: 2.6e-11 at 0.77 c against 7.5e-13 at 0.1 c, nu = 0.3, c = 1/2), and its rounding
     no smaller. The two assemblies of a difference quotient share one ``balance`` (the reflection is not smooth in
     alpha)."""
-    lay, pts = ops.layout, ops.points
+    lay = ops.layout
+    N = ops.n_collocation
     T = ops.transforms(alpha)
+    owner = ops.points.owner[:N]
     stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
     sc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in stick_el])
     lc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in slip_el])
     ns, nl = sc.size, lc.size
-    stick_pts = np.flatnonzero(np.isin(pts.owner, stick_el))
-    N = pts.size
+    stick_pts = np.flatnonzero(np.isin(owner, stick_el))
     n = N + stick_pts.size + 1
     if n != 2 * ns + nl + 1:
         raise ValueError(f"plane system is {n} x {2 * ns + nl + 1}, not square")
     stick = np.zeros((n, 2 * ns))
-    stick[:N, :ns] = T.even[:, sc]                          # (N): H p (stick part)
-    stick[:N, ns:] = gamma * T.values[:, sc]                #      + gamma q at the stick points
+    stick[:N, :ns] = T.even[:N, sc]                          # (N): H p (stick part)
+    stick[:N, ns:] = gamma * T.values[:N, sc]                #      + gamma q at the stick points
     stick[N:-1, ns:] = T.odd[np.ix_(stick_pts, sc)]         # (T): H q (stick part)
     stick[N:-1, :ns] = -gamma * T.values[np.ix_(stick_pts, sc)]  # - gamma p
     stick[-1, :ns] = 2.0 * T.integrals[sc]                  # (P): int_{-1}^{1} p
     normal = np.zeros((n, nl + 1))
-    normal[:N, :nl] = T.even[:, lc]                         # (N): H p (slip part), p = R cos(theta)
+    normal[:N, :nl] = T.even[:N, lc]                         # (N): H p (slip part), p = R cos(theta)
     normal[-1, :nl] = 2.0 * T.integrals[lc]
     shear = np.zeros((n, nl + 1))
-    shear[:N, :nl] = T.values[:, lc]                        # (N): gamma q = R sin(theta) at the slip points
+    shear[:N, :nl] = T.values[:N, lc]                        # (N): gamma q = R sin(theta) at the slip points
     shear[N:-1, :nl] = T.odd[np.ix_(stick_pts, lc)] / gamma  # (T): H q (slip part), q = R sin(theta)/gamma
     even_l, odd_l, value_l = T.mode_slip                    # the mode on the slip end: R = -gamma m
-    normal[:N, -1] = -gamma * even_l
+    normal[:N, -1] = -gamma * even_l[:N]
     normal[-1, -1] = -2.0 * gamma * T.mode_integral
-    shear[:N, -1] = -gamma * value_l
+    shear[:N, -1] = -gamma * value_l[:N]
     shear[N:-1, -1] = -odd_l[stick_pts]
     even_s, odd_s, value_s = T.mode_stick                   # on the stick end: q = m
     mode_stick = np.zeros(n)
-    mode_stick[:N] = gamma * value_s
+    mode_stick[:N] = gamma * value_s[:N]
     mode_stick[N:-1] = odd_s[stick_pts]
     rhs = np.zeros(n)
     rhs[-1] = 1.0
@@ -378,24 +385,23 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     if pin:
         e = lay.stick_end
         slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns
-        own = np.flatnonzero(pts.owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
+        own = np.flatnonzero(owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
         pin_rows = own[pinned_rows(own.size, slots.size)]
         pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
     if balance is None and gamma < BALANCE_GAMMA:
         rows = np.setdiff1d(np.arange(N), pin_rows)
         p_columns = np.setdiff1d(np.arange(ns), slots)
-        balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1), rows)
+        balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1), rows, N)
     if balance is not None:
         _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
-        B = ops.balance_transforms(alpha)
-        r = balance.row
-        stick[r, :ns] = -gamma * B.values[0, sc]
-        stick[r, ns:] = B.odd[0, sc]
+        r = balance.row  # (T) at the balance point, the transforms' row N
+        stick[r, :ns] = -gamma * T.values[N, sc]
+        stick[r, ns:] = T.odd[N, sc]
         stick[r, slots] = 0.0
         normal[r] = 0.0
-        shear[r, :nl] = B.odd[0, lc] / gamma
-        shear[r, -1] = -B.mode_slip[1][0]
-        mode_stick[r] = B.mode_stick[1][0]
+        shear[r, :nl] = T.odd[N, lc] / gamma
+        shear[r, -1] = -odd_l[N]
+        mode_stick[r] = odd_s[N]
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
                                   balance)
 

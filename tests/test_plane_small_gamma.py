@@ -4,8 +4,7 @@
 The series is checked against the solver where both are good (gamma = 0.03, level 3), against itself through nodes
 solved at another level (a convergence study: level 3 against level 2) and through other nodes. The solver's route
 below SMALL_GAMMA: mu within 1e-10 of the series, given c and given mu inverse to each other, its stresses against the
-solver's limit gamma -> 0 from solves at gamma = 0.02 ... 0.04, and no jump where the system is balanced
-(``BALANCE_GAMMA``). Near c = 1 and for tiny gamma given mu: the first-order law (a closed form) with its measured
+solver's limit gamma -> 0 from solves at gamma = 0.02 ... 0.04. Near c = 1 and for tiny gamma given mu: the first-order law (a closed form) with its measured
 O(gamma^2) bound, and the hand-overs at c = 1e-5 and 1 - c = SERIES_GAP_MIN.
 """
 
@@ -15,7 +14,6 @@ import numpy as np
 import pytest
 
 from numeric import plane
-from numeric.core.plane_operators import BALANCE_GAMMA
 from numeric.solutions.plane_small_gamma import NODES, SMALL_GAMMA, gamma_series
 from numeric.solutions.plane_solver import C_SMALLEST, solve_given_c
 
@@ -118,20 +116,6 @@ def test_the_stresses_stay_right_as_gamma_goes_to_zero(nu, c):
     assert np.all(s.shear(stick) > 0.0)
     slipping = c + (1 - c) * np.array([0.1, 0.5, 0.9, 0.99])
     assert np.all(s.slip(slipping) < 0.0) and np.all(np.diff(s.slip(slipping)) < 0.0)
-
-
-def test_the_stresses_do_not_jump_where_the_system_is_balanced():
-    # either side of BALANCE_GAMMA (below: the balanced system; above: the plain one) the default level against level 4
-    # at the same gamma (a convergence study): p, q/gamma and u/gamma within 1e-9 of their largest value (the issue's
-    # accuracy of the stresses; measured below 1e-10 at c = 1/2), so the fields agree where the system changes
-    c = 0.5
-    x = np.array([0.0, 0.25, 0.5, 0.5 + 1e-4, 0.75, 0.99])
-    for g in (0.999 * BALANCE_GAMMA, 1.001 * BALANCE_GAMMA):
-        s = plane.flat_punch(gamma=g, c=c)
-        ref = solve_given_c(c, 1 - c, g, 4).field
-        p_ref, q_ref = ref.pressure_shear(x)
-        for got, want in ((s.pressure(x), p_ref), (s.shear(x) / g, q_ref / g), (s.slip(x) / g, ref.slip(x) / g)):
-            assert np.max(np.abs(got - want)) <= 1e-9 * np.max(np.abs(want)), g
 
 
 @pytest.mark.parametrize("gamma", [1e-16, 1e-20, 1e-28, 1e-100, 1.9999557565557572e-12])  # the last nu = 0.499999999999

@@ -33,49 +33,40 @@ from numeric.core.eigenvalue import carried_along_tangent, newton_theta
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.linear_algebra import EquilibratedLU
 from numeric.core.plane_charts import PlaneLayout, PlaneResolution, plane_layout
-from numeric.core.plane_operators import (BALANCE_GAMMA, LinearisedPlaneSystem, PlaneCollocationSystem, PlaneOperators,
-                                          linearised_system, plane_collocation_system)
+from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocationSystem, PlaneOperators, linearised_system,
+                                          plane_collocation_system)
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
            "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
-           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "BALANCED_ROUNDING", "theta_rounding"]
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "theta_rounding"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
 """Largest theta Newton visits (mu gamma = 1e9): at pi/2 itself the generic mode degenerates (``MODE_BETA_MIN``)."""
 ALPHA_TOLERANCE = 1e-12
 """Newton in theta stops when a step is below this, relative."""
-THETA_ROUNDING = 5e-13
-"""Scale of ``theta_rounding`` on the plain system (absolute)."""
-BALANCED_ROUNDING = 3e-11
-"""Scale of ``theta_rounding`` on the balanced system (relative to theta)."""
+THETA_ROUNDING = 3e-11
+"""Scale of ``theta_rounding`` (relative to theta)."""
 
 
-def theta_rounding(c: float, gamma: float, theta: float) -> float:
-    """The rounding scatter of a given-c solve's theta, absolute: ``THETA_ROUNDING`` c^-0.4 where gamma >=
-    ``BALANCE_GAMMA``, ``BALANCED_ROUNDING`` theta c^-0.6 below (theta the solve's, or its guess).
+def theta_rounding(c: float, theta: float) -> float:
+    """The rounding scatter of a given-c solve's theta: ``THETA_ROUNDING`` theta c^-0.6 (theta the solve's, or its
+    guess).
 
-    On the plain system the eigen functional's rounding is absolute in theta: as nu -> 1/2 (gamma -> 0, theta ~ gamma^2
-    K(c)/K'(c)) the equilibrated system's condition grows like 1/gamma (1.9e12 at nu = 0.3, 8.7e13 at 0.499, c = 0.5;
-    scaling the tangential rows, or Ruiz's equilibration, does not lower it) and G's scatter with it (6e-14 at nu = 0.3,
-    1.5e-11 at 0.499). Measured: the spread (max - min) of theta over seven starts 1e-9 ... 1e-7 off, at levels 0-4,
-    nu in {-1/2, 0, 0.3, 0.45, 0.47, 0.488, 0.495, 0.499}, c in {1e-4, 1e-3, 3e-3, 0.01, 0.1, 0.5, 0.9, 0.99}: for
-    nu >= 0.45 1e-14 ... 3.6e-12, growing toward small c like c^-0.4 and with the level (degree); this envelope, with
-    the relative floor 1e-10, lies above the spread of mu at 152 of 154 points where that spread exceeds 3e-11 (median
-    5.9x where it decides); the two below are nu = 0.47, c = 0.99 at levels 3 and 4 (an isolated spike, 2.7e-12 there
-    against 5e-13 at nu = 0.465 and 0.475).
+    Measured: the spread (max - min) of theta over seven starts 1e-9 ... 1e-7 off, at levels 0-4, c in {1e-4, 1e-3,
+    3e-3, 0.01, 0.1, 0.5, 0.9, 0.99}, nu in {-1/2, 0, 0.3, 0.45, 0.47, 0.488, 0.495, 0.499}: spread / theta below
+    1e-11 at c >= 0.1 for nu <= 0.3 and up to 3e-11 as nu -> 1/2, up to 2e-10 at c = 0.01, 1e-9 at 1e-3, 2e-9 at 1e-4
+    (growing with the level and toward small c, not as gamma -> 0: at c = 0.5 2e-12 ... 3e-11 from nu = 0.45 to
+    0.499). The envelope lies above all 312 points.
 
-    The cause was the normal rows' near-null combination (``numeric.core.plane_operators.plane_collocation_system``):
-    balanced (gamma < ``BALANCE_GAMMA``) the scatter is relative in theta. Measured as above at nu in {0.45, 0.47,
-    0.488, 0.495, 0.499}: spread / theta 7e-13 ... 3e-11 at c >= 0.1, up to 2e-10 at c = 0.01, 1e-9 at 1e-3, 2e-9 at
-    1e-4 (level 4; growing with the level and toward small c, not with 1/gamma: at c = 0.5 2e-12 ... 3e-11 from
-    nu = 0.45 to 0.499, where the plain system's grew to 1.5e-7); the envelope 3e-11 c^-0.6 lies above all 200 points.
+    Before the system was balanced (``numeric.core.plane_operators.plane_collocation_system``) the scatter was absolute
+    in theta (1e-14 ... 3.6e-12, growing like c^-0.4): as nu -> 1/2 (gamma -> 0, theta ~ gamma^2 K(c)/K'(c)) the
+    system's condition grew like 1/gamma and mu's relative error like 1/gamma^2 (2.6e-10 ... 1.3e-7 at nu = 0.47 ...
+    0.499, where the spread / theta is now 2e-12 ... 3e-11 at c = 0.5).
 
     It floors the error estimate, and Newton on the linearised system stops at a step below it (taking that step: the
     root is then within the step's square, not within the envelope)."""
-    if gamma < BALANCE_GAMMA:
-        return BALANCED_ROUNDING * theta * c**-0.6
-    return THETA_ROUNDING * c**-0.4
+    return THETA_ROUNDING * theta * c**-0.6
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -155,7 +146,7 @@ def plane_given_c_linearised(c: float, gap: float, gamma: float, theta_guess: fl
     ops = plane_operators_at(c, gap, res)
     theta = min(theta_guess, THETA_MAX)
     step = max(EXPONENT_STEP, spread)
-    noise = theta_rounding(c, gamma, theta)
+    noise = theta_rounding(c, theta)
     for _ in range(max_outer):
         system = linearised_system(ops, gamma, theta / math.pi, step * theta / math.pi)
         root = newton_theta(system, theta, conditioning=True, noise=noise)

@@ -6,12 +6,11 @@ functional at the level's root, over the level's slope), at least ``ROUNDING_FLO
 value (the scatter of mu between degrees 20 ... 28, where the discretisation error is far below it,
 measured: 1e-12 ... 7e-11 relative over nu in [-1/2, 0.3], c in [0.05, 0.99]), and at least theta's
 rounding scatter ``theta_rounding`` turned into mu or c. On the plain system that scatter was absolute in theta, and
-as nu -> 1/2 (theta ~ gamma^2) it limited mu's relative accuracy (2.6e-10 ... 1.3e-7 at nu = 0.47 ... 0.499); below
-``BALANCE_GAMMA`` (nu > 4/9) the system is balanced (``numeric.core.plane_operators.plane_collocation_system``) and it
-is relative: measured against the small-gamma series through level-3 nodes (``numeric.solutions.plane_small_gamma``,
-an independent route from solves at gamma >= 0.06) at nu = 0.45 ... 0.489, c = 0.05, 0.3, 0.5, 0.9, 0.97, level 2
-is within 9.7e-11 (c = 0.05) and 2.2e-11 (c >= 0.3), where the plain system was up to 3.4e-9 off (nu = 0.489,
-c = 0.05).
+as nu -> 1/2 (theta ~ gamma^2) it limited mu's relative accuracy (2.6e-10 ... 1.3e-7 at nu = 0.47 ... 0.499); on the
+balanced system (``numeric.core.plane_operators.plane_collocation_system``) it is relative: measured against the
+small-gamma series through level-3 nodes (``numeric.solutions.plane_small_gamma``, an independent route from solves
+at gamma >= 0.06) at nu = 0.45 ... 0.489, c = 0.05, 0.3, 0.5, 0.9, 0.97, level 2 is within 9.7e-11 (c = 0.05) and
+2.2e-11 (c >= 0.3), where the plain system was up to 3.4e-9 off (nu = 0.489, c = 0.05).
 
 The estimate is a solve at the partner resolution, so it is formed when ``error`` is first read
 (``numeric.solutions.solution.DeferredError``).
@@ -105,8 +104,12 @@ GUESS_SPREAD = max(1e-9, *(GUESS_ERRORS or {"": 1e-3}).values())
 #: that grows like 1/c): there it is not a signal. The poles at nu = -1/2, c = 0.91 ... 0.935 (alpha = 0.41 ... 0.48)
 #: were the stick pressure's free singular family: pinned from alpha = 0.04 on (``numeric.core.plane_operators``) the
 #: default layout is within 1e-15 of the reference there. Below the family stays free and such poles remain; over
-#: 19 x 23 (nu, c) in [-0.6, 0.3] x [0.05, 0.6] the route takes the alternate at 1 (nu = 0, c = 0.05; at 3 while the
-#: family was free up to alpha = 1/4, nu = -0.008, c = 0.17 among them).
+#: 19 x 23 (nu, c) in [-0.6, 0.3] x [0.05, 0.6] the route took the alternate at 1 (nu = 0, c = 0.05; at 3 while the
+#: family was free up to alpha = 1/4, nu = -0.008, c = 0.17 among them). These figures are the plain system's: balanced
+#: (``numeric.core.plane_operators.plane_collocation_system``) the condition number no longer grows like gamma^-2
+#: (median 5.5e9 against 5.9e10 over 22 x 12 (nu, c) in [-0.6, 0.45] x [0.05, 0.6], gamma^2 x conditioning at most
+#: 9.5e11, mu within 4e-11 of the finer solves everywhere there) and the route took the alternate nowhere on that grid;
+#: the check stays, for poles elsewhere.
 CONDITION_LIMIT = 1e12
 CONDITION_CHECK_GAP = 1e-3
 CONDITION_CHECK_C = 1e-2
@@ -163,7 +166,7 @@ def solve_given_c(c: float, gap: float, gamma: float, level: int) -> PlaneSolve:
     def estimate() -> float:
         shift = partner_shift_theta(c, gap, gamma, solution, plane_partner(solution.layout.resolution))
         t = fine.theta
-        rounding = fine.mu * theta_rounding(c, gamma, t) / (math.sin(t) * math.cos(t))  # d mu / mu = d theta / (sin cos)
+        rounding = fine.mu * theta_rounding(c, t) / (math.sin(t) * math.cos(t))  # d mu / mu = d theta / (sin cos)
         return max(abs(_mu(t + shift, gamma) - fine.mu), ROUNDING_FLOOR * fine.mu, rounding)
 
     return PlaneSolve(fine, DeferredError(estimate), level)
@@ -262,9 +265,12 @@ FULL_STICK_GAP = 2.0**-40
 #: c = 0.5; it changes by 3000 gamma^2 at 1 - c = 2.2e-16), so the first-order law's relative error in mu is at most
 #: FIRST_ORDER_R_MAX gamma^2.
 FIRST_ORDER_R_MAX = 60.0
-#: Below this gamma the first-order law's mu (error FIRST_ORDER_R_MAX gamma^2, relative) is more accurate than a
-#: given-c solve's, whose theta carries the absolute rounding ``theta_rounding`` (5e-13 c^-0.4) on theta ~ gamma^2 K/K'
-#: (K/K' = 6.5 ... 12 for 1 - c = 1e-8 ... 1e-16): both 1.7e-6 here.
+#: Below this gamma the first-order law's mu (error FIRST_ORDER_R_MAX gamma^2, relative) is taken next to c = 1, where
+#: a given-c solve's rounding grows as gamma falls: on the plain system its theta carried the absolute rounding 5e-13
+#: c^-0.4 on theta ~ gamma^2 K/K' (K/K' = 6.5 ... 12 for 1 - c = 1e-8 ... 1e-16), both 1.7e-6 here; on the balanced
+#: one, measured at 1 - c = 1e-12 (r = (mu/mu_1 - 1)/gamma^2 of levels 1-3 against 30.31), the solver's mu is 2.7e-9,
+#: 3.5e-8, 2.3e-7 and 6.4e-7 off at gamma = 3e-4, 1e-4, 3e-5, 1e-5 against the law's bound 5.4e-6, 6e-7, 5.4e-8, 6e-9
+#: (at 1 - c = 1e-8 it stays within 3e-13 down to gamma = 1e-6: the layouts of 1400-2000 unknowns are what loses it).
 FIRST_ORDER_GAMMA = 1.7e-4
 
 
@@ -309,7 +315,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
 
         try:
             last, slope, remaining = guided_steps(theta, c, gap, guess.slope, step, lambda s: s.theta,
-                                                  theta_noise=max(THETA_SCATTER * theta, theta_rounding(c, gamma, theta)))
+                                                  theta_noise=max(THETA_SCATTER * theta, theta_rounding(c, theta)))
         except SolverError:
             last = None
         if last is not None:
@@ -319,7 +325,7 @@ def solve_given_mu(mu: float, gamma: float, level: int) -> PlaneSolve:
             def estimate() -> float:
                 lay = solution.layout
                 shift = partner_shift_theta(lay.c, lay.gap, gamma, last, plane_partner(lay.resolution))
-                return _gap_error(fine, (abs(shift) + theta_rounding(lay.c, gamma, theta)) / abs(slope) + remaining)
+                return _gap_error(fine, (abs(shift) + theta_rounding(lay.c, theta)) / abs(slope) + remaining)
 
             return PlaneSolve(fine, DeferredError(estimate), level)
     c = float(stick_width_first_order(mu, gamma)) if found is None else found[0]

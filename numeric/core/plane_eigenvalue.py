@@ -255,9 +255,10 @@ def plane_given_theta(theta: float, gamma: float, xi_guess: float, res: PlaneRes
     g0 = _residual(x0, theta, gamma, res)[0]
     g1, system, ops, z = _residual(x1, theta, gamma, res)
     previous = math.inf
+    slope = math.nan
     for _ in range(max_steps):
-        if g1 == g0:
-            return PlaneEigensolution(system, ops, theta, z, abs(x1 - x0))
+        if g1 == g0:  # G equal to the last bit at two points: the slope the last step was taken with (if any)
+            return PlaneEigensolution(system, ops, theta, z, abs(x1 - x0), slope)
         slope = (g1 - g0) / (x1 - x0)
         x2 = x1 - g1 / slope
         x0, g0 = x1, g1
@@ -265,8 +266,10 @@ def plane_given_theta(theta: float, gamma: float, xi_guess: float, res: PlaneRes
         g1, system, ops, z = _residual(x1, theta, gamma, res)
         size = abs(x1 - x0)
         if size <= tol * max(1.0, abs(x1)) or (size <= 1e-9 and size >= 0.25 * previous):
-            # the slope of the last two points, or (a step of zero: G was 0 to the last bit) the one it was taken with
-            return PlaneEigensolution(system, ops, theta, z, size, (g1 - g0) / (x1 - x0) if size > 0.0 else slope)
+            # the slope of the last two points, or (a step of zero: G was 0 to the last bit; or G the same to the last bit
+            # at both, as at nu = -0.9, theta = pi/2 with numpy's SIMD limited to x86-64-v2) the one it was taken with
+            last = (g1 - g0) / (x1 - x0) if size > 0.0 else 0.0
+            return PlaneEigensolution(system, ops, theta, z, size, last if last != 0.0 else slope)
         previous = size
     raise SolverError(f"the secant iteration in c did not converge for theta = {theta}, gamma = {gamma}")
 

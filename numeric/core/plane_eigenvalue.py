@@ -106,7 +106,8 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     if not derivative:
         return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
-    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned, balance=system.balance)
+    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned,
+                                       balanced=system.balance is not None, balance=system.balance)
     dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
     dG = system.functional_derivative(theta) @ z - y @ (dD @ z)
     return system, z, float(l @ z), float(dG)

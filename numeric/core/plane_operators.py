@@ -45,8 +45,8 @@ import scipy.linalg as sla
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.plane_cauchy import (PLAIN as PLAIN_WEIGHT, CauchyGeometry, Family, cauchy_geometry, family_cauchy,
                                       family_integrals, family_values, legendre01, mode_cauchy)
-from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points, locate,
-                                       element_families)
+from numeric.core.plane_charts import (AT_C, EDGE, PLAIN, SLIP, STICK, PlaneLayout, PointSet, collocation_points,
+                                       element_families, locate)
 from numeric.core.quadrature import gauss_legendre
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
@@ -58,14 +58,19 @@ true exponent (with beta held at 1e-3 instead, the functional near c_max at nu =
 exponent). The eigenvalue does not depend on the mode's column (at the root its amplitude is 0), only the smoothness
 of G near the root does; the limit mu -> inf is taken by extrapolation (``numeric.solutions.plane_solver``)."""
 
+BALANCE_ALPHA_MAX = 0.25
+"""The system is balanced below this basis exponent (mu gamma < 1; ``plane_collocation_system``): beyond, next to
+c_max, balancing changed nothing measurable (nu = -1/2, c = 0.9, alpha = 0.39: mu 2e-13 and 1e-13 off degree 28, p and
+q at and next to x = c 1e-9 either way; nu = 0, c = 0.97, alpha = 0.23: 3e-14 and 1e-14, 5e-10 and 3e-10), and its LU
+of the p block costs ~1 ms a solve at 500-700 unknowns."""
 BALANCE_POINT = 1e-3
 """The balancing (T) row's point lies this fraction of the stick end's length before c."""
 NEAR_NULL_STEPS = 4
 """Inverse-iteration steps for the normal rows' near-null combination (each gains ~1e-2, the ratio of the two least
 singular values of their p block)."""
 
-__all__ = ["MODE_BETA_MIN", "BALANCE_POINT", "NEAR_NULL_STEPS", "PlaneOperators", "Transforms", "Balance",
-           "near_null_balance", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
+__all__ = ["MODE_BETA_MIN", "BALANCE_ALPHA_MAX", "BALANCE_POINT", "NEAR_NULL_STEPS", "PlaneOperators", "Transforms",
+           "Balance", "near_null_balance", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
            "LinearisedPlaneSystem", "linearised_system"]
 
 
@@ -308,7 +313,7 @@ class PlaneCollocationSystem:
 
 
 def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pinned: bool | None = None,
-                             balance: Balance | None = None) -> PlaneCollocationSystem:
+                             balanced: bool | None = None, balance: Balance | None = None) -> PlaneCollocationSystem:
     """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
 
     The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
@@ -327,23 +332,24 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5); between 0.04 and 1/4 (free until this was measured) pinned p at
     x = c came from up to 2.9e-9 to 3.1e-10 of degree 28.
 
-    The system is balanced. The rows count N (N) + (T) + (P), but the p block of (N) is square and nearly singular
-    (H p = 0 has the punch's own solution (1 - x^2)^(-1/2) in the continuum, fixed by (P)): its least singular value is
-    ~2e-10 (equilibrated), its left singular vector u a combination of (N) rows that in the discrete system only
-    constrains q, through gamma q. As gamma -> 0 that made a near-null vector of the whole system (least singular value
-    3e-11, 7e-12, 4.5e-13 at gamma = 0.29, 0.04, 0.002, c = 1/2; concentrated on the stick shear) and the rounding of G
-    absolute in theta, so that mu's relative error grew like 1/gamma^2 (3.4e-9 at nu = 0.489). So the (N) rows (less
-    the pins) are reflected (Householder, ``near_null_balance``: u by inverse iteration on the p block) to put u's
-    combination in one row, which becomes (T) at one more stick point (``BALANCE_POINT`` of the stick end before c;
-    its transforms are the operators' last row): at gamma = 0 the system then falls into two square blocks, p from
-    (N) and (P), q and the mode from (T). Measured: the rounding scatter of theta is relative
-    (``numeric.core.plane_eigenvalue.theta_rounding``); mu at nu = 0.45 ... 0.489 comes within 1e-10 of the
-    small-gamma series (8.7e-11 at c = 0.05); the stresses stay right down to gamma = 1e-8 (levels 2 and 4 within
-    4e-11 of the largest value). Over 22 x 12 (nu, c) in [-0.6, 0.45] x [0.05, 0.6] level 2 lies within 4e-11 of the
-    median of degrees 26 and 28 in two layouts (the plain system: 5.6e-10 at nu = 0.4, c = 0.05, and 3 points beyond
-    1e-10), the equilibrated condition number's median 5.5e9 (plain 5.9e10). The extra row's place mattered while it
-    lay far from c (mu 2.6e-11 off at 0.77 c, 7.5e-13 at 0.1 c, nu = 0.3, c = 1/2; 3e-10 ... 5e-10 at c = 0.05,
-    nu = 0.46, 0.48 anywhere below 0.6 c): next to c, 5e-11 ... 1e-10 there. The two assemblies of a difference
+    The system is balanced below ``BALANCE_ALPHA_MAX`` (``balanced`` overrides, ``balance`` gives the reflection: the
+    two assemblies of a difference quotient agree). The rows count N (N) + (T) + (P), but the p block of (N) is square
+    and nearly singular (H p = 0 has the punch's own solution (1 - x^2)^(-1/2) in the continuum, fixed by (P)): its
+    least singular value is ~2e-10 (equilibrated), its left singular vector u a combination of (N) rows that in the
+    discrete system only constrains q, through gamma q. As gamma -> 0 that made a near-null vector of the whole system
+    (least singular value 3e-11, 7e-12, 4.5e-13 at gamma = 0.29, 0.04, 0.002, c = 1/2; concentrated on the stick shear)
+    and the rounding of G absolute in theta, so that mu's relative error grew like 1/gamma^2 (3.4e-9 at nu = 0.489). So
+    the (N) rows (less the pins) are reflected (Householder, ``near_null_balance``: u by inverse iteration on the p
+    block) to put u's combination in one row, which becomes (T) at one more stick point (``BALANCE_POINT`` of the stick
+    end before c; its transforms are the operators' last row): at gamma = 0 the system then falls into two square
+    blocks, p from (N) and (P), q and the mode from (T). Measured: the rounding scatter of theta is relative
+    (``numeric.core.plane_eigenvalue.theta_rounding``); mu at nu = 0.45 ... 0.489 comes within 1e-10 of the small-gamma
+    series (8.7e-11 at c = 0.05); the stresses stay right down to gamma = 1e-8 (levels 2 and 4 within 4e-11 of the
+    largest value). Over 22 x 12 (nu, c) in [-0.6, 0.45] x [0.05, 0.6] level 2 lies within 4e-11 of the median of
+    degrees 26 and 28 in two layouts (the plain system: 5.6e-10 at nu = 0.4, c = 0.05, and 3 points beyond 1e-10), the
+    equilibrated condition number's median 5.5e9 (plain 5.9e10). The extra row's place mattered while it lay far from c
+    (mu 2.6e-11 off at 0.77 c, 7.5e-13 at 0.1 c, nu = 0.3, c = 1/2; 3e-10 ... 5e-10 at c = 0.05, nu = 0.46, 0.48
+    anywhere below 0.6 c): next to c, 5e-11 ... 1e-10 there. The two assemblies of a difference
     quotient share one ``balance`` (the reflection is not smooth in alpha)."""
     lay = ops.layout
     N = ops.n_collocation
@@ -388,19 +394,23 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
         own = np.flatnonzero(owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
         pin_rows = own[pinned_rows(own.size, slots.size)]
         pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
-    if balance is None:
-        rows = np.setdiff1d(np.arange(N), pin_rows)
-        p_columns = np.setdiff1d(np.arange(ns), slots)
-        balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1), rows, N)
-    _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
-    r = balance.row  # (T) at the balance point, the transforms' row N
-    stick[r, :ns] = -gamma * T.values[N, sc]
-    stick[r, ns:] = T.odd[N, sc]
-    stick[r, slots] = 0.0
-    normal[r] = 0.0
-    shear[r, :nl] = T.odd[N, lc] / gamma
-    shear[r, -1] = -odd_l[N]
-    mode_stick[r] = odd_s[N]
+    if not (alpha < BALANCE_ALPHA_MAX if balanced is None else balanced):
+        balance = None
+    else:
+        if balance is None:
+            rows = np.setdiff1d(np.arange(N), pin_rows)
+            p_columns = np.setdiff1d(np.arange(ns), slots)
+            balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1),
+                                        rows, N)
+        _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
+        r = balance.row  # (T) at the balance point, the transforms' row N
+        stick[r, :ns] = -gamma * T.values[N, sc]
+        stick[r, ns:] = T.odd[N, sc]
+        stick[r, slots] = 0.0
+        normal[r] = 0.0
+        shear[r, :nl] = T.odd[N, lc] / gamma
+        shear[r, -1] = -odd_l[N]
+        mode_stick[r] = odd_s[N]
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
                                   balance)
 
@@ -455,7 +465,8 @@ class LinearisedPlaneSystem:
 def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
     """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
     base = plane_collocation_system(ops, gamma, alpha)
-    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned, balance=base.balance)
+    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned, balanced=base.balance is not None,
+                                     balance=base.balance)
     rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
                                   (other.normal - base.normal) / step, (other.shear - base.shear) / step,
                                   (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),

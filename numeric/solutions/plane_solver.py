@@ -108,7 +108,7 @@ GUESS_SPREAD = max(1e-9, *(GUESS_ERRORS or {"": 1e-3}).values())
 #: family was free up to alpha = 1/4, nu = -0.008, c = 0.17 among them). These figures are the plain system's: balanced
 #: (``numeric.core.plane_operators.plane_collocation_system``) the condition number no longer grows like gamma^-2
 #: (median 5.5e9 against 5.9e10 over 22 x 12 (nu, c) in [-0.6, 0.45] x [0.05, 0.6], gamma^2 x conditioning at most
-#: 9.5e11, mu within 4e-11 of the finer solves everywhere there) and the route took the alternate nowhere on that grid;
+#: 9.5e11, mu within 6.4e-11 of the finer solves everywhere there) and the route took the alternate nowhere on that grid;
 #: the check stays, for poles elsewhere.
 CONDITION_LIMIT = 1e12
 CONDITION_CHECK_GAP = 1e-3

@@ -38,7 +38,7 @@ from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocatio
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
            "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
-           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "theta_rounding"]
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "THETA_ROUNDING_ABSOLUTE", "theta_rounding"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
@@ -46,18 +46,24 @@ THETA_MAX = HALF_PI - 1e-9
 ALPHA_TOLERANCE = 1e-12
 """Newton in theta stops when a step is below this, relative."""
 THETA_ROUNDING = 3e-11
-"""Scale of ``theta_rounding`` (relative to theta)."""
+"""Scale of ``theta_rounding``'s relative part (times theta)."""
+THETA_ROUNDING_ABSOLUTE = 5e-13
+"""Scale of ``theta_rounding``'s absolute part."""
 
 
 def theta_rounding(c: float, theta: float) -> float:
-    """The rounding scatter of a given-c solve's theta: ``THETA_ROUNDING`` theta c^-0.6 (theta the solve's, or its
-    guess).
+    """The rounding scatter of a given-c solve's theta: the lesser of ``THETA_ROUNDING_ABSOLUTE`` c^-0.4 and
+    ``THETA_ROUNDING`` theta c^-0.6 (theta the solve's, or its guess).
 
     Measured: the spread (max - min) of theta over seven starts 1e-9 ... 1e-7 off, at levels 0-4, c in {1e-4, 1e-3,
-    3e-3, 0.01, 0.1, 0.5, 0.9, 0.99}, nu in {-1/2, 0, 0.3, 0.45, 0.47, 0.488, 0.495, 0.499}: spread / theta below
-    1e-11 at c >= 0.1 for nu <= 0.3 and up to 3e-11 as nu -> 1/2, up to 2e-10 at c = 0.01, 1e-9 at 1e-3, 2e-9 at 1e-4
-    (growing with the level and toward small c, not as gamma -> 0: at c = 0.5 2e-12 ... 3e-11 from nu = 0.45 to
-    0.499). The envelope lies above all 312 points.
+    3e-3, 0.01, 0.1, 0.5, 0.9, 0.99}, nu in {-1/2, 0, 0.3, 0.45, 0.47, 0.488, 0.495, 0.499} (312 points): absolute
+    at most 8.6e-12 (nu = 0.3, c = 1e-4, level 4), below the absolute part everywhere (2e-11 there); relative to
+    theta below 1e-11 at c >= 0.1 for nu <= 0.3 and up to 3e-11 as nu -> 1/2, up to 2e-10 at c = 0.01, 1e-9 at 1e-3,
+    2e-9 at 1e-4 (growing with the level and toward small c, not as gamma -> 0: at c = 0.5 2e-12 ... 3e-11 from
+    nu = 0.45 to 0.499), below the relative part everywhere. The absolute part decides where theta is not small (it
+    is the plain system's envelope, which next to c_max, where the system is not balanced, still holds), the relative
+    one as nu -> 1/2: with the relative part alone the estimate at nu = 0.3, c = 3.4e-4 (mu = 0.05) was 3.6e-8 in c,
+    where the scatter is ~1e-9, and ``stick_radius(..., rtol=1e-8)`` warned.
 
     Before the system was balanced (``numeric.core.plane_operators.plane_collocation_system``) the scatter was absolute
     in theta (1e-14 ... 3.6e-12, growing like c^-0.4): as nu -> 1/2 (gamma -> 0, theta ~ gamma^2 K(c)/K'(c)) the
@@ -66,7 +72,7 @@ def theta_rounding(c: float, theta: float) -> float:
 
     It floors the error estimate, and Newton on the linearised system stops at a step below it (taking that step: the
     root is then within the step's square, not within the envelope)."""
-    return THETA_ROUNDING * theta * c**-0.6
+    return min(THETA_ROUNDING_ABSOLUTE * c**-0.4, THETA_ROUNDING * theta * c**-0.6)
 
 
 @dataclass(frozen=True, slots=True, eq=False)

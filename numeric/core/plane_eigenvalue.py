@@ -38,7 +38,8 @@ from numeric.core.plane_operators import (LinearisedPlaneSystem, PlaneCollocatio
 
 __all__ = ["PlaneEigensolution", "plane_operators_at", "plane_given_c", "plane_given_c_linearised", "plane_at_theta",
            "plane_given_theta", "partner_shift_theta", "partner_shift_xi", "ALPHA_TOLERANCE",
-           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "THETA_ROUNDING_ABSOLUTE", "theta_rounding"]
+           "CHORD_BELOW", "EXPONENT_STEP", "OUTER_TOLERANCE", "THETA_MAX", "THETA_ROUNDING", "THETA_ROUNDING_ABSOLUTE",
+           "theta_rounding"]
 
 HALF_PI = 0.5 * math.pi
 THETA_MAX = HALF_PI - 1e-9
@@ -112,8 +113,7 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     if not derivative:
         return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
-    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, pinned=system.pinned,
-                                       balanced=system.balance is not None, balance=system.balance)
+    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, like=system)
     dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
     dG = system.functional_derivative(theta) @ z - y @ (dD @ z)
     return system, z, float(l @ z), float(dG)

@@ -37,7 +37,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
@@ -89,6 +89,8 @@ class Transforms:
     mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_integral: float
+
+
 def _with_balance_point(lay: PlaneLayout, points: PointSet) -> PointSet:
     """``points`` and, after them, the balancing (T) row's point ``BALANCE_POINT`` of the stick end's length before c
     (its offsets formed from 1 - x: next to c = 1 a double x rounds onto c)."""
@@ -312,8 +314,8 @@ class PlaneCollocationSystem:
         return np.zeros(self.rhs.size)
 
 
-def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pinned: bool | None = None,
-                             balanced: bool | None = None, balance: Balance | None = None) -> PlaneCollocationSystem:
+def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
+                             like: PlaneCollocationSystem | None = None) -> PlaneCollocationSystem:
     """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
 
     The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
@@ -322,18 +324,19 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     at c for mu = inf).
 
     Nor has the admissible local solution (c - x)^(1/2 - alpha), or any with cot(pi lam) = mu gamma, p on the stick
-    side: from alpha = 0.04 on (``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``; ``pinned`` overrides, so that the two
-    assemblies of a difference quotient in alpha agree) p's coefficients of h_beta on the stick end are pinned to 0 in
-    (N) rows at the stick end's points ``numeric.core.stick_pressure_pins.pinned_rows``, as in the axisymmetric system. Left free,
-    they made a near-null vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
+    side: from alpha = 0.04 on (``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``; ``like``, an assembly at a nearby
+    exponent, imposes its choice, so that the two assemblies of a difference quotient in alpha agree) p's coefficients
+    of h_beta on the stick end are pinned to 0 in (N) rows at the stick end's points
+    ``numeric.core.stick_pressure_pins.pinned_rows``, as in the axisymmetric system. Left free, they made a near-null
+    vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
     system's least singular value rose from 2.2e-11 to 7.9e-9 with the pins, mu moved from 2e-12 to 1e-13 of the
     degree-24 solution and p at x = c from 7e-9 to 8e-12 (nu = -1/2, c = 0.93: 3e-10 to 3e-13 in mu, 9e-7 to 1e-11 in
     p). Below alpha = 0.04 they stay free: pinned there, mu between degrees 18 and 24 differed 50 times more at
     nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5); between 0.04 and 1/4 (free until this was measured) pinned p at
     x = c came from up to 2.9e-9 to 3.1e-10 of degree 28.
 
-    The system is balanced below ``BALANCE_ALPHA_MAX`` (``balanced`` overrides, ``balance`` gives the reflection: the
-    two assemblies of a difference quotient agree). The rows count N (N) + (T) + (P), but the p block of (N) is square
+    The system is balanced below ``BALANCE_ALPHA_MAX`` (``like`` imposes its choice and its reflection: the two
+    assemblies of a difference quotient agree). The rows count N (N) + (T) + (P), but the p block of (N) is square
     and nearly singular (H p = 0 has the punch's own solution (1 - x^2)^(-1/2) in the continuum, fixed by (P)): its
     least singular value is ~2e-10 (equilibrated), its left singular vector u a combination of (N) rows that in the
     discrete system only constrains q, through gamma q. As gamma -> 0 that made a near-null vector of the whole system
@@ -386,7 +389,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
     mode_stick[N:-1] = odd_s[stick_pts]
     rhs = np.zeros(n)
     rhs[-1] = 1.0
-    pin = pins_stick_pressure(alpha, plane=True) if pinned is None else pinned
+    pin = pins_stick_pressure(alpha, plane=True) if like is None else like.pinned
     slots = pin_rows = np.zeros(0, dtype=int)
     if pin:
         e = lay.stick_end
@@ -394,14 +397,16 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float, pi
         own = np.flatnonzero(owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
         pin_rows = own[pinned_rows(own.size, slots.size)]
         pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
-    if not (alpha < BALANCE_ALPHA_MAX if balanced is None else balanced):
-        balance = None
+    if like is not None:
+        balance = like.balance
+    elif alpha < BALANCE_ALPHA_MAX:
+        rows = np.setdiff1d(np.arange(N), pin_rows)
+        p_columns = np.setdiff1d(np.arange(ns), slots)
+        p_block = np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1)
+        balance = near_null_balance(p_block, rows, N)
     else:
-        if balance is None:
-            rows = np.setdiff1d(np.arange(N), pin_rows)
-            p_columns = np.setdiff1d(np.arange(ns), slots)
-            balance = near_null_balance(np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1),
-                                        rows, N)
+        balance = None
+    if balance is not None:
         _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
         r = balance.row  # (T) at the balance point, the transforms' row N
         stick[r, :ns] = -gamma * T.values[N, sc]
@@ -465,8 +470,7 @@ class LinearisedPlaneSystem:
 def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
     """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
     base = plane_collocation_system(ops, gamma, alpha)
-    other = plane_collocation_system(ops, gamma, alpha + step, pinned=base.pinned, balanced=base.balance is not None,
-                                     balance=base.balance)
+    other = plane_collocation_system(ops, gamma, alpha + step, like=base)
     rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
                                   (other.normal - base.normal) / step, (other.shear - base.shear) / step,
                                   (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),

@@ -190,3 +190,55 @@ def test_the_cached_blocks_of_the_elements_at_c_are_the_rules_at_the_points(c, l
             a, b = cached.of(name)[:, cols], generic.of(name)[:, cols]
             if np.any(b):
                 assert np.max(np.abs(a - b)) <= 4e-15 * np.max(np.abs(b)), (name, element)
+
+
+def test_differenced_upper_rows_are_formed_without_cancellation():
+    # (2.2a) is solved as its row at the first collocation point and every other row less that one
+    # (``numeric.core.operators.collocation_system``). Far from an element the kernel 1/(2 sqrt(u - v)) barely changes
+    # between two points with small v, so the difference of two rows keeps only their rounding: at c = 1e-3 the change
+    # is ~1e-6 of the entries, and subtracting the rows would leave it ~1e-10 relative off. ``AbelMatrices.change``
+    # forms it from the difference kernel on the same nodes: against the 30-digit difference of the two integrals
+    # (tanh-sinh on the element, the points exact in mpmath) within 1e-13 of the element block's largest entry:
+    # measured 4.3e-16, where the difference of the two rows is 6.1e-10 off (the kernel is smooth on these elements,
+    # where the Gauss rule is at rounding; 1e-13 leaves room for a sum of ~20 terms in any order)
+    from numeric.core.charts import EDGE, RESOLUTIONS, collocation
+    from numeric.core.operators import REFERENCE
+    c, alpha = 1e-3, 0.3
+    lay = layout(c, 1.0 - c, RESOLUTIONS[2])
+    anchor, offset, x = collocation(lay)
+    M = AbelOperators(lay).matrices(alpha)
+    ns = lay.n_stick
+    rows = [ns - 1, ns + 2, ns + 40]  # the stick point nearest c, slip points just above c and farther out
+    far_plain = [e for e in range(len(lay)) if lay.kind[e] == PLAIN and lay.lo[e] + lay.anchor_value(e) > 0.1]
+    elements = far_plain[:1] + far_plain[-1:] + [int(np.flatnonzero(lay.kind == EDGE)[0])]
+
+    def point(i):
+        return mpmath.mpf(lay.c2 if anchor[i] == AT_C2 else 1.0) + mpmath.mpf(offset[i])
+
+    with mpmath.workdps(30):
+        v0 = point(REFERENCE)
+        for e in elements:
+            A = mpmath.mpf(lay.anchor_value(e))
+            lo, L = mpmath.mpf(lay.lo[e]), mpmath.mpf(lay.hi[e] - lay.lo[e])
+            K, m = int(lay.degree[e]), int(lay.n_basis[e])
+            edge = lay.kind[e] == EDGE
+            cols = [0, K] + ([K + 1, m - 1] if edge else [])
+
+            def basis(j, s):
+                if not edge:
+                    return mpmath.legendre(j, 2 * s - 1)
+                k = j if j <= K else j - K - 1
+                w = s ** (2 * mpmath.mpf(alpha) - 1) * mpmath.legendre(k, 2 * s - 1)
+                return w if j <= K else w * s**2 * mpmath.log(s)
+
+            def u_of(s):
+                return A - L * s * s if edge else A + lo + L * s
+
+            jacobian = (lambda s: 2 * L * s) if edge else (lambda s: L)
+            for i in rows:
+                v = point(i)
+                block = M.change[i, int(lay.starts[e]): int(lay.starts[e + 1])]
+                for j in cols:
+                    exact = mpmath.quad(lambda s: basis(j, s) * jacobian(s) * (
+                        1 / (2 * mpmath.sqrt(u_of(s) - v)) - 1 / (2 * mpmath.sqrt(u_of(s) - v0))), [0, 1])
+                    assert abs(block[j] - float(exact)) <= 1e-13 * np.max(np.abs(block)), (e, i, j, block[j], exact)

@@ -24,15 +24,14 @@ def client():
 def test_a_sweep_of_full_solutions_gives_the_serial_numbers(client):
     # use_table=False: every point is a level-1 solve in the worker. The solve is deterministic, so the numbers
     # are the serial ones up to the round-off of the LU's summation order (BLAS threads may differ between the two
-    # processes), which the solver bounds by its rounding floor: ERROR_FLOOR absolute on the scale of P* ~ 1, times
-    # 2e-3/c below c = 2e-3 (c = 4.4e-5 at nu = 0, mu = 0.05: measured 2.8e-15 apart, floor 9e-12)
+    # processes), which the solver bounds by its rounding floor: ERROR_FLOOR absolute on the scale of P* ~ 1 (c = 4.4e-5
+    # at nu = 0, mu = 0.05: measured 2.8e-15 apart)
     mu = np.array([0.05, 0.2, 0.8, 3.0])
     nu = np.array([[-0.5], [0.0], [0.3]])
     serial = stick_radius(mu, nu, use_table=False, level=1)
     remote = stick_radius(mu, nu, use_table=False, level=1, executor=client.get_executor())
     assert remote.shape == (3, 4)
-    floor = np.vectorize(rounding_floor)(serial, 1.0)
-    assert np.all(np.abs(remote - serial) <= floor), (remote, serial)
+    assert np.all(np.abs(remote - serial) <= rounding_floor(1.0)), (remote, serial)
     c = np.array([0.3, 0.6, 0.9])
     np.testing.assert_allclose(friction_coefficient(c, 0.25, use_table=False, level=1, executor=client.get_executor()),
                                friction_coefficient(c, 0.25, use_table=False, level=1), rtol=ERROR_FLOOR, atol=0)

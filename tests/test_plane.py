@@ -550,7 +550,7 @@ def test_given_mu_carries_the_solution_along_newtons_tangent(nu, c, monkeypatch)
     assert carried.theta == math.atan(mu * float(gamma_from_nu(nu))) and carried.tangent is not None
     assert not factored  # the given-c solves factor through newton_theta; plane_at_theta added none
     system = carried.linearised
-    fresh = PlaneField(dataclasses.replace(carried, coefficients=EquilibratedLU(system.matrix(carried.theta)).solve(
+    fresh = PlaneField(dataclasses.replace(carried, coefficients=EquilibratedLU(system.matrix(carried.theta)).solve_refined(
         system.rhs)))
     x = np.array([0.0, 0.5 * s.c, s.c, np.nextafter(s.c, 2.0), 0.5 * (1 + s.c), 1 - 1e-5 * (1 - s.c)])
     (p, q), (pf, qf) = s.field.pressure_shear(x), fresh.pressure_shear(x)

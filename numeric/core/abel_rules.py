@@ -38,7 +38,7 @@ import numpy as np
 from numeric.core.charts import collocation_chart, shifted_legendre
 from numeric.core.quadrature import gauss_legendre, graded_rule
 
-__all__ = ["TOWARD", "AWAY", "WHOLE", "FAR_END", "sqrt_inside_rule", "sqrt_self_rule", "sqrt_outside_nodes", "sqrt_outside_kernel", "sqrt_near_outside_rule", "NEAR_OUTSIDE",
+__all__ = ["TOWARD", "AWAY", "WHOLE", "FAR_END", "sqrt_inside_rule", "sqrt_self_rule", "sqrt_outside_nodes", "sqrt_outside_kernel", "sqrt_outside_kernel_change", "sqrt_near_outside_rule", "NEAR_OUTSIDE",
            "FAR_BEFORE", "FAR_BEYOND", "INTERPOLATION_POINTS", "chebyshev_points01", "outside_projector",
            "plain_inside_rule", "plain_self_rule", "plain_outside_rule", "gauss01"]
 
@@ -195,6 +195,24 @@ def sqrt_outside_kernel(S: np.ndarray, one_minus: np.ndarray, d: np.ndarray, bef
     if before:
         return S[None, :] / np.sqrt(S[None, :] ** 2 - d[:, None])
     return S[None, :] / np.sqrt((d - 1.0)[:, None] + (one_minus * (1.0 + S))[None, :])
+
+
+def sqrt_outside_kernel_change(S: np.ndarray, one_minus: np.ndarray, d: np.ndarray, d_ref: float, change: np.ndarray,
+                               before: bool) -> np.ndarray:
+    """``sqrt_outside_kernel`` at s_v^2 = d less its value at d_ref, (rows, q), formed without cancellation.
+
+    ``change`` is d - d_ref, formed by the caller from the points' offsets (not from d). With A = s^2 - d (``before``)
+    or B = d - s^2, 1/sqrt(A) - 1/sqrt(A_ref) = (A_ref - A) / (sqrt(A) sqrt(A_ref) (sqrt(A) + sqrt(A_ref))): far from the
+    element the kernel barely changes between two points, and the difference of its two values would keep only the
+    rounding of either (the rows of [S75] (2.2a) differenced against a reference point, ``numeric.core.operators``).
+    """
+    if before:
+        a, a_ref, gain = S[None, :] ** 2 - d[:, None], S ** 2 - d_ref, change
+    else:
+        a, a_ref = (d - 1.0)[:, None] + (one_minus * (1.0 + S))[None, :], (d_ref - 1.0) + one_minus * (1.0 + S)
+        gain = -change
+    ra, rr = np.sqrt(a), np.sqrt(a_ref)[None, :]
+    return S[None, :] * gain[:, None] / (ra * rr * (ra + rr))
 
 
 def plain_inside_rule(xi_v: np.ndarray, nq: int, upper: bool) -> tuple[np.ndarray, np.ndarray]:

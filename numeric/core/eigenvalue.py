@@ -112,7 +112,7 @@ def newton_theta(system: EigenSystem, theta: float, tol: float = 1e-15, max_step
     previous = math.inf
     for _ in range(max_steps):
         lu = EquilibratedLU(system.matrix(theta), conditioning)
-        z = lu.solve(system.rhs)
+        z = lu.solve_refined(system.rhs)
         l = system.functional(theta)
         y = lu.solve_transposed(l)
         dD_z = system.derivative_times(theta, z)
@@ -142,7 +142,7 @@ def _functional_at(ops: AbelOperators, gamma: float, theta: float) -> float:
     """G(theta) with the basis carrying alpha = theta / pi."""
     system = collocation_system(ops, gamma, theta / math.pi)
     lu = EquilibratedLU(system.matrix(theta))
-    return float(system.functional(theta) @ lu.solve(system.rhs))
+    return float(system.functional(theta) @ lu.solve_refined(system.rhs))
 
 
 def _bracket_theta(ops: AbelOperators, gamma: float, theta: float) -> float:
@@ -217,8 +217,7 @@ def _residual(c_logit: float, theta: float, gamma: float, res: Resolution):
     c = 1.0 / (1.0 + math.exp(-c_logit))
     gap = 1.0 / (1.0 + math.exp(c_logit))
     system = collocation_system(operators_at(c, gap, res), gamma, theta / math.pi)
-    lu = EquilibratedLU(system.matrix(theta))
-    z = lu.solve(system.rhs)
+    z = EquilibratedLU(system.matrix(theta)).solve_refined(system.rhs)
     return system.functional(theta) @ z, system, z
 
 
@@ -306,7 +305,7 @@ def _at_theta(sol: Eigensolution, theta: float) -> Eigensolution:
     z = carried_along_tangent(sol.coefficients, sol.theta, theta, sol.tangent, sol.newton_step)
     if z is not None:
         return Eigensolution(system, theta, z, abs(theta - sol.theta), sol.tangent)
-    z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+    z = EquilibratedLU(system.matrix(theta)).solve_refined(system.rhs)
     return Eigensolution(system, theta, z, abs(theta - sol.theta))
 
 

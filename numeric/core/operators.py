@@ -39,7 +39,8 @@ import numpy as np
 from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINTS, NEAR_OUTSIDE, chebyshev_points01, gauss01,
                                      outside_projector,
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
-                                     sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_nodes, sqrt_self_rule)
+                                     sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_kernel_change,
+                                     sqrt_outside_nodes, sqrt_self_rule)
 from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, collocation,
                                  collocation_chart, family_factors,
                                  shifted_legendre)
@@ -68,6 +69,13 @@ def near_plain(degree: int) -> float:
 
 NAMES = ("upper", "lower")
 """The two Abel integrals: over u > v and over u < v (``numeric.core.abel_rules``)."""
+
+REFERENCE = 0
+"""The collocation point (the first, the one nearest the centre) whose row of [S75] (2.2a) the others are differenced
+against (``collocation_system``)."""
+
+CHANGE = "change"
+"""The key of ``AbelMatrices.change``: the upper integral less its row at ``REFERENCE``."""
 
 
 @lru_cache(maxsize=None)
@@ -131,6 +139,10 @@ class AbelMatrices:
     by x); ``integral``, ``integral_x``: int phi du and int phi/sqrt(u) du over each element. Columns of
     elements not asked for are 0; what was not formed (a name not asked for, the divided integrals without
     ``AbelOperators``' ``divided``) is empty.
+
+    ``change``: ``upper`` less its row at the collocation point ``REFERENCE``, formed without cancellation where a point
+    and the reference see an element through the same outside rule (far from it, where the kernel barely changes), as
+    the difference of the two rows elsewhere (there it loses nothing); formed on the collocation points only.
     """
 
     upper: np.ndarray
@@ -139,6 +151,7 @@ class AbelMatrices:
     lower_x: np.ndarray
     integral: np.ndarray
     integral_x: np.ndarray
+    change: np.ndarray
 
     def of(self, name: str) -> np.ndarray:
         """The matrix or vector called ``name`` ("upper", "lower/x", "integral", ...)."""
@@ -208,6 +221,14 @@ class AbelOperators:
         owner = np.repeat(np.arange(len(lay)), lay.n_basis) if collocated else np.full(N, -1)
         own = owner[:, None] == elements[None, :]
         self._fixed = {key: np.zeros((N, nb)) for key in self.names + (tuple(n + "/x" for n in self.names) if divided else ())}
+        # v - v_ref of every point, from the offsets (the anchors c^2 and 1 are w = 1 - c^2 apart): the rows of the upper
+        # integral differenced against the reference point's (``AbelMatrices.change``), on the collocation points
+        self._rise = None
+        if collocated and "upper" in self.names:
+            ref_anchor = anchor[REFERENCE]
+            shift = np.where(anchor == ref_anchor, 0.0, lay.w if ref_anchor == AT_C2 else -lay.w)
+            self._rise = shift + (offset - offset[REFERENCE])
+            self._fixed[CHANGE] = np.full((N, nb), np.nan)
         self._fixed["integral"] = np.zeros(nb)
         if divided:
             self._fixed["integral/x"] = np.zeros(nb)
@@ -228,6 +249,9 @@ class AbelOperators:
                             target[cols] = block[0]
                         else:
                             target[t.rows, cols] = block
+        if self._rise is not None:  # the rest of the change by difference: there it loses nothing
+            upper, change = self._fixed["upper"], self._fixed[CHANGE]
+            np.subtract(upper, upper[REFERENCE], out=change, where=np.isnan(change))
         self._nodes = _node_sets(lay, self._terms)
 
     def _plain(self, E: np.ndarray, rel: np.ndarray, own: np.ndarray, collocated: bool) -> None:
@@ -285,19 +309,38 @@ class AbelOperators:
                     ks = k[on]
                     Mx[i[on], slip_index[ks]] = _weighted_sum(W[on] / np.sqrt((A + lo)[ks][:, None] + L[ks][:, None] * S[on]),
                                                               P[on])
-            i, k = np.nonzero(side & ~near)
+            smooth = side & ~near
+            i, k = np.nonzero(smooth)
             if i.size:  # the kernel is smooth on the element: one Gauss rule
                 Kf = (0.5 * L[k][:, None] * wq[None, :]) / np.sqrt(np.abs(d_lo[i, k][:, None] + L[k][:, None] * xq[None, :]))
                 M[i, k] = Kf @ Pq
                 on = slip[k]
                 if np.any(on):
                     Mx[i[on], slip_index[k[on]]] = (Kf[on] * inv_x[k[on]]) @ Pq
+            if upper and self._rise is not None:
+                self._fixed[CHANGE][:, cols] = self._plain_change(smooth, d_lo, L, xq, wq, Pq).reshape(N, -1)
             self._fixed[name][:, cols] = M.reshape(N, -1)
             if slip_k.size:
                 self._fixed[name + "/x"][:, slip_cols] = Mx.reshape(N, -1)
         self._fixed["integral"][cols] = (L[:, None] * (wq @ Pq)[None, :]).ravel()
         if slip_k.size:
             self._fixed["integral/x"][slip_cols] = (L[slip_k, None] * ((wq[None, :] * inv_x[slip_k]) @ Pq)).ravel()
+
+    def _plain_change(self, smooth: np.ndarray, d_lo: np.ndarray, L: np.ndarray, xq: np.ndarray, wq: np.ndarray,
+                      Pq: np.ndarray) -> np.ndarray:
+        """``AbelMatrices.change`` on the plain elements, (points, elements, degree + 1): where a point and the reference
+        both see an element through the one Gauss rule (``smooth``), 1/sqrt(u - v) - 1/sqrt(u - v_ref) =
+        (v - v_ref) / (sqrt(u - v) sqrt(u - v_ref) (sqrt(u - v) + sqrt(u - v_ref))) on its nodes; nan elsewhere."""
+        out = np.full(smooth.shape + (Pq.shape[1],), np.nan)
+        seen = smooth[REFERENCE]
+        i, k = np.nonzero(smooth & seen[None, :])
+        keep = i != REFERENCE
+        i, k = i[keep], k[keep]
+        if i.size:
+            step = L[k][:, None] * xq[None, :]
+            a, a_ref = np.sqrt(d_lo[i, k][:, None] + step), np.sqrt(d_lo[REFERENCE, k][:, None] + step)
+            out[i, k] = ((0.5 * L[k][:, None] * wq[None, :]) * self._rise[i][:, None] / (a * a_ref * (a + a_ref))) @ Pq
+        return out
 
     def _singular(self, e: int, rel: np.ndarray, own: np.ndarray, owner: np.ndarray) -> dict[str, list[_Term]]:
         """The quadrature terms of singular element e for every point (``owner``: each point's element, -1 off the
@@ -346,12 +389,23 @@ class AbelOperators:
             far = side & ((d <= FAR_BEFORE) if away else (d >= FAR_BEYOND))
             if np.count_nonzero(far) < INTERPOLATION_POINTS:  # a few points: the direct sum costs less than the projection
                 far[:] = False
+            changes = []
             rows = np.flatnonzero(side & ~near & ~far)
             if rows.size:
                 terms.append(_Term(rows, rL * Wo[None, :] * sqrt_outside_kernel(So, one_minus, d[rows], away), So, Po, True))
+                changes.append((rows, So, one_minus, Wo, None))
             rows = np.flatnonzero(far)
             if rows.size:
                 terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows], away), So, Po, True, projector))
+                changes.append((rows, Sc, one_minus_c, None, projector))
+            if upper and self._rise is not None:  # ``AbelMatrices.change`` where the reference is in the same group
+                for rows, nodes, one_less, weights, project in changes:
+                    if REFERENCE in rows:
+                        rows = rows[rows != REFERENCE]
+                        K = sqrt_outside_kernel_change(nodes, one_less, d[rows], float(d[REFERENCE]),
+                                                       (sign / L) * self._rise[rows], away)
+                        W = rL * (K if weights is None else weights[None, :] * K)
+                        out.setdefault(CHANGE, []).append(_Term(rows, W, So, Po, True, project))
             if near.any():
                 rows = np.flatnonzero(near)
                 if partner_rows is not None and away and np.array_equal(rows, partner_rows):
@@ -386,39 +440,48 @@ class AbelOperators:
             start, head = int(lay.starts[e]), int(lay.degree[e]) + 1
             only_singular = kind != EDGE and not displacement  # the regular family is in the fixed part
             cols = slice(start + head, int(lay.starts[e + 1])) if only_singular else slice(start, int(lay.starts[e + 1]))
+
+            def block_of(t: _Term) -> np.ndarray:
+                part = where[id(t.S)]
+                singular = flat_singular[part].reshape(t.S.shape)
+                regular = None if flat_regular is None else flat_regular[part].reshape(t.S.shape)
+                if t.shared:
+                    key_basis = (family, id(t.S), sdeg, only_singular)
+                    if key_basis not in bases:
+                        basis = singular[:, None] * t.P[:, : sdeg + 1]
+                        if not only_singular:
+                            basis = np.concatenate([t.P if regular is None else regular[:, None] * t.P, basis], axis=1)
+                        bases[key_basis] = basis
+                    basis = bases[key_basis]
+                    if t.projector is None:
+                        return t.W @ basis
+                    key_projected = key_basis + (id(t.projector),)
+                    if key_projected not in bases:
+                        bases[key_projected] = t.projector @ basis
+                    return t.W @ bases[key_projected]
+                block = _weighted_sum(t.W * singular, t.P[..., : sdeg + 1])
+                if only_singular:
+                    return block
+                return np.concatenate([_weighted_sum(t.W if regular is None else t.W * regular, t.P), block], axis=1)
+
             for key, terms in blocks.items():
+                if key == CHANGE:
+                    continue
                 target = out[key]
                 for t in terms:
-                    part = where[id(t.S)]
-                    singular = flat_singular[part].reshape(t.S.shape)
-                    regular = None if flat_regular is None else flat_regular[part].reshape(t.S.shape)
-                    if t.shared:
-                        key_basis = (family, id(t.S), sdeg, only_singular)
-                        if key_basis not in bases:
-                            basis = singular[:, None] * t.P[:, : sdeg + 1]
-                            if not only_singular:
-                                basis = np.concatenate([t.P if regular is None else regular[:, None] * t.P, basis], axis=1)
-                            bases[key_basis] = basis
-                        basis = bases[key_basis]
-                        if t.projector is not None:
-                            key_projected = key_basis + (id(t.projector),)
-                            if key_projected not in bases:
-                                bases[key_projected] = t.projector @ basis
-                            block = t.W @ bases[key_projected]
-                        else:
-                            block = t.W @ basis
-                    else:
-                        block = _weighted_sum(t.W * singular, t.P[..., : sdeg + 1])
-                        if not only_singular:
-                            block = np.concatenate([_weighted_sum(t.W if regular is None else t.W * regular, t.P), block],
-                                                   axis=1)
                     if t.rows is None:
-                        target[cols] = block[0]
+                        target[cols] = block_of(t)[0]
                     else:
-                        target[t.rows, cols] = block
+                        target[t.rows, cols] = block_of(t)
+            if CHANGE in out:  # by difference, then without cancellation where the reference shares a rule
+                upper = out["upper"][:, cols]
+                out[CHANGE][:, cols] = upper - upper[REFERENCE]
+                for t in blocks.get(CHANGE, ()):
+                    out[CHANGE][t.rows, cols] = block_of(t)
         empty = np.zeros((self.x.size, 0))
         return AbelMatrices(out.get("upper", empty), out.get("lower", empty), out.get("upper/x", empty),
-                            out.get("lower/x", empty), out["integral"], out.get("integral/x", np.zeros(0)))
+                            out.get("lower/x", empty), out["integral"], out.get("integral/x", np.zeros(0)),
+                            out.get(CHANGE, empty))
 
 
 def _family(kind: int) -> int:
@@ -549,20 +612,31 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
     nl = N - ns
     n = 2 * ns + nl
     xs, xl = x[:ns], x[ns:]
+    # (2.2a) at the reference point, and at every other point less its value at the reference (``REFERENCE``): w* = 1
+    # there and 0 here. The upper integrals' differences are formed without cancellation (``AbelMatrices.change``):
+    # far from an element the kernel 1/sqrt(t^2 - x^2) barely changes from point to point, so the rows themselves hold
+    # the solution only through differences of their rounding (the componentwise condition of theta grew like 1/c,
+    # 2e4 at c = 1e-3 at nu = 0.45; differenced, 35, flat in c), and the integrals int q, the same in every row, drop out.
+    ref = REFERENCE
+    upper = M.change
+    upper[ref] = M.upper[ref]
+    lower, lower_x = x[:, None] * M.lower[:, :ns], x[:, None] * M.lower_x[:, ns:]
     stick = np.empty((n, 2 * ns))
-    stick[:N, :ns] = M.upper[:, :ns]                                                          # (2.2a): int_x^1 t p
-    stick[:N, ns:] = -gamma * (0.5 * M.integral[None, :ns] - x[:, None] * M.lower[:, :ns])  # -gamma {int q - x int_0^x}
-    stick[N:, ns:] = xs[:, None] * M.upper[:ns, :ns]                                         # (2.2b): x int_x^1 q
-    stick[N:, :ns] = -gamma * M.lower[:ns, :ns]                                              # - gamma int_0^x t p
+    stick[:N, :ns] = upper[:, :ns]                                                # (2.2a): int_x^1 t p
+    stick[:N, ns:] = gamma * (lower - lower[ref])                                # -gamma {int q - x int_0^x q}
+    stick[ref, ns:] = -gamma * (0.5 * M.integral[:ns] - lower[ref])
+    stick[N:, ns:] = xs[:, None] * M.upper[:ns, :ns]                              # (2.2b): x int_x^1 q
+    stick[N:, :ns] = -gamma * M.lower[:ns, :ns]                                   # - gamma int_0^x t p
     normal = np.zeros((n, nl))
-    normal[:N] = M.upper[:, ns:]
+    normal[:N] = upper[:, ns:]
     shear = np.empty((n, nl))
-    shear[:N] = -gamma * (0.5 * M.integral_x[None, ns:] - x[:, None] * M.lower_x[:, ns:])
+    shear[:N] = gamma * (lower_x - lower_x[ref])
+    shear[ref] = -gamma * (0.5 * M.integral_x[ns:] - lower_x[ref])
     shear[N:] = xs[:, None] * M.upper_x[:ns, ns:]
     us_stick = np.zeros((nl, 2 * ns))
     us_stick[:, :ns] = -gamma * M.lower[ns:, :ns]  # (2.2b) at slip points: the stick q is below them
     rhs = np.zeros(n)
-    rhs[:N] = 1.0
+    rhs[ref] = 1.0
     e = lay.stick_end
     deg = int(lay.degree[e])
     singular_slots = np.arange(int(lay.starts[e]) + deg + 1, int(lay.starts[e + 1]))

@@ -108,7 +108,7 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     system = plane_collocation_system(ops, gamma, alpha)
     D = system.matrix(theta)
     lu = EquilibratedLU(D)
-    z = lu.solve(system.rhs)
+    z = lu.solve_refined(system.rhs)
     l = system.functional(theta)
     if not derivative:
         return system, z, float(l @ z), math.nan
@@ -183,7 +183,7 @@ def plane_at_theta(solution: PlaneEigensolution, theta: float) -> PlaneEigensolu
         return solution
     z = carried_along_tangent(solution.coefficients, solution.theta, theta, solution.tangent, solution.last_step)
     if z is None:
-        z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+        z = EquilibratedLU(system.matrix(theta)).solve_refined(system.rhs)
     return PlaneEigensolution(system.at(theta), solution.operators, theta, z, abs(theta - solution.theta),
                               solution.slope, system, solution.conditioning, solution.tangent)
 
@@ -250,7 +250,7 @@ def _residual(xi: float, theta: float, gamma: float, res: PlaneResolution):
     gap = 1.0 / (1.0 + math.exp(xi))
     ops = plane_operators_at(c, gap, res)
     system = plane_collocation_system(ops, gamma, theta / math.pi)
-    z = EquilibratedLU(system.matrix(theta)).solve(system.rhs)
+    z = EquilibratedLU(system.matrix(theta)).solve_refined(system.rhs)
     return float(system.functional(theta) @ z), system, ops, z
 
 

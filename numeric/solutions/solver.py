@@ -4,8 +4,8 @@ Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` 
 difference between the level and the same problem one polynomial degree lower
 (``numeric.core.charts.partner``; at level 0, and at level 1 within 10 (1 - c_max) of c_max, ten times it,
 ``estimate_safety``), at least ``ERROR_FLOOR`` times
-the value (the rounding level of the eigenvalue condition), a floor that grows like 1/c below c = 2e-3
-(``SMALL_C_ROUNDING``, measured) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the
+the value (the rounding level of the eigenvalue condition, flat in c down to c = 1e-5 since the rows of (2.2a) are
+differenced and the solves refined, ``numeric.core.operators.collocation_system``) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the
 level's c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against
 level 4 and the graded solver (``derivations/stability.md``, ``tests/test_singular_solver.py``) the true error of
 the default level lies below this estimate everywhere checked; the default level is at the rounding floor at most
@@ -55,7 +55,7 @@ from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, clos
 from numeric.solutions.solution import DeferredError, FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
-           "ESTIMATE_SAFETY", "NEAR_ESTIMATE_SAFETY", "NEAR_SAFETY_GAPS", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "SMALL_C_ROUNDING", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
+           "ESTIMATE_SAFETY", "NEAR_ESTIMATE_SAFETY", "NEAR_SAFETY_GAPS", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
            "nearly_adhesive"]
 
 DEFAULT_LEVEL = 2
@@ -76,13 +76,6 @@ NEAR_C_MAX = 1e-6
 #: c within this many units in the last place of c_max (or within twice the distance of the level's c_max from
 #: the closed form, if larger) is c_max to rounding: the answer is the slip limit, mu = inf.
 ROUNDING_ULPS = 4.0
-#: Below this stick radius the rounding floor grows like SMALL_C_ROUNDING / c. Measured: the largest difference in
-#: mu between levels 2, 3 and 4 (each level's round-off, not discretisation: they scatter without converging;
-#: mpmath on the level-0 system at nu = 0.3, c = 1e-4 puts the double root 8e-12 relative off) over
-#: nu in {-0.5, 0, 0.3, 0.45} is 1.6e-11, 1.3e-11, 3.7e-12, 4.8e-13, 2.0e-13, 8e-14 at c = 1e-5, 3e-5, 1e-4,
-#: 3e-4, 1e-3, 3e-3 (P* ~ 1 is the scale there); the floor (then 2e-13) max(1, 2e-3/c) was 4e-11, 1.3e-11, 4e-12,
-#: 1.3e-12, 4e-13, 2e-13: above each, and within 3x of the largest below c = 1e-4 (with ERROR_FLOOR = 5e-13, 2.5x higher).
-SMALL_C_ROUNDING = 2e-3
 #: The error estimate of each level is its difference from the partner one degree lower times this factor. Level 0
 #: converges erratically next to c_max: over 80 (nu, c) (``numeric.core.charts.RESOLUTIONS``) its true error was up
 #: to 6.4 times the difference (nu = 0, 1 - c = 1.5 (1 - c_max)), at two points above it; at levels 1-3 never (level 4
@@ -166,16 +159,21 @@ def _logit_guess(mu: float, gamma: float, found: TableValues | None = None) -> t
     return (math.log(c) - math.log(gap) if c < 0.5 else math.log1p(-gap) - math.log(gap)), LAW_STEP
 
 
-def rounding_floor(c: float, scale: float) -> float:
-    """The rounding level of the eigenvalue condition: ERROR_FLOOR * scale, times SMALL_C_ROUNDING / c below
-    c = SMALL_C_ROUNDING (the round-off of the solve grows like 1/c there)."""
-    return ERROR_FLOOR * scale * max(1.0, SMALL_C_ROUNDING / c)
+def rounding_floor(scale: float) -> float:
+    """The rounding level of the eigenvalue condition, ERROR_FLOOR * scale, at every c.
+
+    Small c once needed more (a floor growing like 1/c below c = 2e-3: levels 2, 3, 4 scattered by 1.6e-11 in mu at
+    c = 1e-5): the rows of (2.2a) are now differenced against one point and the solves refined
+    (``numeric.core.operators.collocation_system``, ``numeric.core.linear_algebra.EquilibratedLU.solve_refined``), and
+    over nu in {-0.5, 0, 0.3, 0.45} the three levels agree within 1.5e-14 in mu and P* at c = 1e-5, 3e-5, 1e-4, 3e-4,
+    1e-3 and 3e-3 (measured)."""
+    return ERROR_FLOOR * scale
 
 
 def _error(fine: SingularField, coarse: SingularField, value: Callable[[SingularField], float]) -> float:
     scale = max(abs(value(fine)), abs(fine.compliance))
     return max(abs(value(fine) - value(coarse)), abs(fine.compliance - coarse.compliance),
-               rounding_floor(fine.c, scale))
+               rounding_floor(scale))
 
 
 def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: float | None = None,
@@ -299,7 +297,7 @@ def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found:
             shift = abs(guided.solution.theta - coarse.theta) / abs(guided.slope) + guided.remaining_step
             scale = max(fine.c, fine.compliance)
             return max(fine.c * fine.gap * shift, abs(fine.compliance - coarse.compliance) + compliance_slope * shift,
-                       rounding_floor(fine.c, scale))
+                       rounding_floor(scale))
 
         return from_field(nu, fine, level, DeferredError(estimate), mu)
     start, step = _logit_guess(mu, gamma, found)

@@ -227,7 +227,7 @@ class HonestyCheck:
 
     ``reference_kind``: "level 4", "graded (levels 4, 3)", "closed form c_max" or "table (level 4)";
     ``reference_error``: the reference's own error estimate; ``at_floor``: the bound is the solver's
-    rounding floor (``rounding_floor``: ERROR_FLOOR * max(|value|, P*), more below c = 2e-3), where the true error
+    rounding floor (``rounding_floor``: ERROR_FLOOR * max(|value|, P*)), where the true error
     lies below what any level resolves.
     """
 
@@ -618,7 +618,7 @@ def _spread(items: list, limit: int | None) -> list:
 
 def _floor(p: SweepPoint, bound: float, *values: float) -> bool:
     """Whether ``bound`` is the solver's rounding floor at p (``numeric.solutions.solver.rounding_floor``)."""
-    return bound <= rounding_floor(p.c, max(abs(v) for v in values)) * (1.0 + 1e-9)
+    return bound <= rounding_floor(max(abs(v) for v in values)) * (1.0 + 1e-9)
 
 
 def _level4_checks(p: SweepPoint) -> list[HonestyCheck]:
@@ -859,7 +859,7 @@ def system_mpmath_check(nu: float, c: float, *, gap: float | None = None, level:
     system, theta = es.system, es.theta
     field = SingularField(es)
     D, b = system.matrix(theta), system.rhs
-    z_double = EquilibratedLU(D).solve(b)  # as the solver solves
+    z_double = EquilibratedLU(D).solve_refined(b)  # as the solver solves
     Dp, l, lp = system.matrix_derivative(theta), system.functional(theta), system.functional_derivative(theta)
     ns = system.n_stick
     with mpmath.workdps(dps):

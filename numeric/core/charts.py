@@ -60,7 +60,7 @@ from numeric.core.quadrature import gauss_legendre, legendre_values
 
 __all__ = [
     "PLAIN", "STICK_END", "SLIP_END", "EDGE", "STICK", "SLIP", "AT_C2", "AT_ONE",
-    "Resolution", "RESOLUTIONS", "partner", "Layout", "SLIVER", "CENTRE_RATIO", "layout", "h_beta", "family_factors", "basis_values",
+    "Resolution", "RESOLUTIONS", "partner", "Layout", "SLIVER", "CENTRE_RATIO", "layout", "chart_logarithm", "h_beta", "family_factors", "basis_values",
     "FEW_POINTS", "shifted_legendre", "chart_offset", "chart_of_offset", "COLLOCATION_POWER", "collocation_chart", "collocation",
 ]
 
@@ -223,15 +223,23 @@ def layout(c: float, gap: float, res: Resolution) -> Layout:
                   _frozen(np.concatenate([[0], np.cumsum(nb)]), int))
 
 
-def h_beta(beta: float, s: np.ndarray) -> np.ndarray:
+def chart_logarithm(s: np.ndarray) -> np.ndarray:
+    """log s where s > 0, 0 elsewhere: what ``h_beta`` and ``family_factors`` take the powers of s from. Nodes that
+    serve many alpha (``numeric.core.operators.AbelOperators``) form it once: per alpha only the exponentials remain
+    (the logarithm was a third of the family factors' time)."""
+    s = np.asarray(s, dtype=float)
+    return np.log(np.where(s > 0.0, s, 1.0))
+
+
+def h_beta(beta: float, s: np.ndarray, log_s: np.ndarray | None = None) -> np.ndarray:
     """The singular family at c: (s^beta - s)/(beta - 1) (beta > 1/2) or (s^beta - 1)/beta (beta <= 1/2).
 
     Stable as beta -> 1 (-> s log s) and beta -> 0 (-> log s); at s = 0 it is 0 (beta > 1/2),
-    -1/beta (0 < beta <= 1/2) or -inf (beta = 0).
+    -1/beta (0 < beta <= 1/2) or -inf (beta = 0). ``log_s``: ``chart_logarithm(s)``, if the caller has it.
     """
     s = np.asarray(s, dtype=float)
     pos = s > 0.0
-    ls = np.log(np.where(pos, s, 1.0))
+    ls = chart_logarithm(s) if log_s is None else log_s
     if beta > 0.5:
         d = beta - 1.0
         out = s * (ls if d == 0.0 else np.expm1(d * ls) / d)
@@ -242,9 +250,10 @@ def h_beta(beta: float, s: np.ndarray) -> np.ndarray:
     return np.where(pos, out, at_zero)
 
 
-def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = False
+def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = False, log_s: np.ndarray | None = None
                    ) -> tuple[np.ndarray | None, np.ndarray]:
-    """Factors of the two families on a singular element at chart points s.
+    """Factors of the two families on a singular element at chart points s (``log_s``: ``chart_logarithm(s)``, if the
+    caller has it).
 
     Stick/slip end: (None, h_beta(s)), beta = 1 - 2 alpha; edge: (s^(2 alpha - 1), s^(2 alpha + 1) log s).
     ``displacement``: the families of u* = x int_x^1 q - gamma int_0^x t p (one Abel order
@@ -260,21 +269,21 @@ def family_factors(kind: int, s: np.ndarray, alpha: float, displacement: bool = 
             beta = 1.0 - 2.0 * alpha
             # s h_beta is (s^(1+beta) - s^2)/(beta - 1) for beta > 1/2; below, h_beta carries a constant, which
             # would put a linear term into u*: there s^(1+beta) itself (s log s in the limit beta = 0)
-            singular = s * (h_beta(beta, s) if beta > 0.5 or beta == 0.0 else s**beta)
+            singular = s * (h_beta(beta, s, log_s) if beta > 0.5 or beta == 0.0 else s**beta)
             return s * s, singular
-        return None, h_beta(1.0 - 2.0 * alpha, s)
+        return None, h_beta(1.0 - 2.0 * alpha, s, log_s)
     pos = s > 1e-300  # below, the weights of every rule are 0 (and s^(2 alpha - 1) could overflow)
     sp = np.where(pos, s, 1.0)
+    ls = np.log(sp) if log_s is None else np.where(pos, log_s, 0.0)
     if displacement:
-        ls = np.log(sp)
         t = 2.0 * alpha
         if t <= 0.5:  # (s^t - 1)/t - (s - 1), over 1 - t
             family = ls - (sp - 1.0) if t == 0.0 else (np.expm1(t * ls) / t - (sp - 1.0)) / (1.0 - t)
         else:  # s (s^(t - 1) - 1)/(t (1 - t)) + (s - 1)/t, the same without the cancellation near t = 1
             family = (sp - 1.0) - sp * ls if t >= 1.0 else sp * np.expm1((t - 1.0) * ls) / (t * (1.0 - t)) + (sp - 1.0) / t
         return None, np.where(pos, family, 0.0)
-    weight = np.where(pos, sp ** (2.0 * alpha - 1.0), 0.0)
-    return weight, weight * np.where(pos, sp * sp * np.log(sp), 0.0)
+    weight = np.where(pos, np.exp((2.0 * alpha - 1.0) * ls), 0.0)
+    return weight, weight * (sp * sp * ls)
 
 
 #: Up to this many points the recurrence runs on Python floats (the same operations in the same order, so the same

@@ -41,8 +41,8 @@ from numeric.core.abel_rules import (FAR_BEFORE, FAR_BEYOND, INTERPOLATION_POINT
                                      plain_inside_rule, plain_outside_rule, plain_self_rule, sqrt_inside_rule,
                                      sqrt_near_outside_rule, sqrt_outside_kernel, sqrt_outside_kernel_change,
                                      sqrt_outside_nodes, sqrt_self_rule)
-from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, collocation,
-                                 collocation_chart, family_factors,
+from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STICK_END, Layout, chart_logarithm,
+                                 collocation, collocation_chart, family_factors,
                                  shifted_legendre)
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
@@ -253,6 +253,7 @@ class AbelOperators:
             upper, change = self._fixed["upper"], self._fixed[CHANGE]
             np.subtract(upper, upper[REFERENCE], out=change, where=np.isnan(change))
         self._nodes = _node_sets(lay, self._terms)
+        self._logs = {family: chart_logarithm(flat) for family, (flat, _) in self._nodes.items()}
 
     def _plain(self, E: np.ndarray, rel: np.ndarray, own: np.ndarray, collocated: bool) -> None:
         """All plain elements E at once (they share degree and rules): rel, own are (points, elements)."""
@@ -429,7 +430,7 @@ class AbelOperators:
         lay = self.layout
         out = {key: value.copy() for key, value in self._fixed.items()}
         # the family factors at every node of a family (the two ends share theirs), one call each
-        values = {family: family_factors(family, flat, alpha, displacement)
+        values = {family: family_factors(family, flat, alpha, displacement, self._logs[family])
                   for family, (flat, _) in self._nodes.items()}
         bases: dict = {}  # tabulated and projected bases per (family, node set, columns)
         for e, blocks in self._terms.items():

@@ -10,7 +10,7 @@ quantity is recorded in the generated module (``ERRORS``: relative for mu, c (re
 (``gap``, regions N and L); relative to max(1, |value|) for P*, p(0), A and C) and checked by
 ``tests/test_tables.py``.
 
-Run time: about 30 minutes on 2 cores (two processes; single-threaded BLAS, or the threads of the
+Run time: 30-45 minutes on 2 cores (46 on a loaded machine) (two processes; single-threaded BLAS, or the threads of the
 two processes fight over the cores), with a progress bar per region on a terminal:
 
     OPENBLAS_NUM_THREADS=1 python derivations/build_tables.py [--quick]
@@ -186,8 +186,9 @@ def recheck(path: Path) -> None:
     print(f"errors: {errors}; {time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
 
-#: Below this stick radius the level-3 references carry the solver's round-off (an absolute ~2e-13 (2e-3/c) in mu,
-#: ``numeric.solutions.solver.SMALL_C_ROUNDING``): the errors above it are recorded apart, ``ERRORS_ABOVE_SMALL_C``.
+#: The errors at c >= SMALL_C are also recorded apart (``ERRORS_ABOVE_SMALL_C``): below it the level-3 references
+#: once carried the solver's round-off (~2e-13 (2e-3/c) absolute in mu, before (2.2a) was differenced and the solves
+#: refined, ``numeric.core.operators.collocation_system``); the two records now agree but in c (1.2e-13 against 4.3e-14).
 SMALL_C = 1e-3
 
 

@@ -10,8 +10,8 @@ REGIONS = {'S': ('logit_c', (0.0, 0.75), True, (-1.0, -0.5, 0.0, 0.5, 1.0)), 'N'
 #: worst errors at held-out points against fresh level-3 solves: relative for mu, c (region S) and
 #: 1 - c (gap, regions N and L); relative to max(1, |value|) for P*, p(0), A and C; everywhere, and at
 #: c >= 0.001 (below, the references carry the solver's round-off)
-ERRORS = {'mu': 3.35e-10, 'c': 4.32e-09, 'gap': 2.1e-13, 'compliance': 1.77e-12, 'central_pressure': 7.77e-09, 'sphere_A': 1.33e-12, 'sphere_C': 4.17e-09, 'cone_A': 8.1e-13, 'cone_C': 2.5e-10}
-ERRORS_ABOVE_SMALL_C = {'mu': 1.75e-11, 'c': 1.15e-11, 'gap': 2.1e-13, 'compliance': 8.56e-14, 'central_pressure': 9.9e-11, 'sphere_A': 1.32e-12, 'sphere_C': 1.7e-11, 'cone_A': 7.99e-13, 'cone_C': 7.5e-12}
+ERRORS = {'mu': 9.29e-12, 'c': 1.22e-13, 'gap': 1.42e-13, 'compliance': 6.2e-15, 'central_pressure': 1.53e-13, 'sphere_A': 1.32e-12, 'sphere_C': 1.7e-11, 'cone_A': 7.99e-13, 'cone_C': 7.5e-12}
+ERRORS_ABOVE_SMALL_C = {'mu': 9.29e-12, 'c': 4.32e-14, 'gap': 1.42e-13, 'compliance': 6.2e-15, 'central_pressure': 1.53e-13, 'sphere_A': 1.32e-12, 'sphere_C': 1.7e-11, 'cone_A': 7.99e-13, 'cone_C': 7.5e-12}
 #: region -> stored function -> per piece (offset, nx, ny) of its Chebyshev coefficients in the array
 SERIES = {
     'S': {

@@ -396,6 +396,9 @@ def _regula_falsi(excess, lo: float, f_lo: float, hi: float, f_hi: float, tol: f
     for iteration in range(1, max_iterations + 1):
         mu = hi - f_hi * (hi - lo) / (f_hi - f_lo)  # regula falsi
         f_mu, sol = excess(mu)
+        if not math.isfinite(f_mu):  # a midpoint pressure exactly 0 there: a pole, not this bracket's root
+            return replace(sol, iterations=iteration, converged=False,
+                           message=f"mu*(mu) is not finite at mu = {mu!r} (a pole inside the bracket)")
         if abs(f_mu) < tol:
             return replace(sol, iterations=iteration, converged=True, message="regula falsi converged")
         if f_mu > 0.0:

@@ -92,8 +92,14 @@ def legendre_values(xi: np.ndarray, k: int) -> np.ndarray:
     out[0] = 1.0
     if k >= 1:
         out[1] = xi
-    for n in range(1, k):
-        out[n + 1] = ((2 * n + 1) * xi * out[n] - n * out[n - 1]) / (n + 1)
+    scratch = np.empty(np.shape(xi))
+    for n in range(1, k):  # ((2 n + 1) xi P_n - n P_(n-1)) / (n + 1), in place: the same operations, no temporaries
+        following = out[n + 1]
+        np.multiply(2 * n + 1, xi, out=following)
+        following *= out[n]
+        np.multiply(n, out[n - 1], out=scratch)
+        following -= scratch
+        following /= n + 1
     return out
 
 

@@ -82,7 +82,8 @@ class Resolution:
     conditioning: coefficients of 5e5 with 3 at the edge against 2e3 with 1); plain_degree: degree on plain elements
     (default: ``degree``); c_fraction: the two elements touching c^2 have length
     c_fraction * min(c^2, 1 - c^2); grading: ratio of successive plain elements; edge_fraction:
-    the edge element has length edge_fraction * (1 - c^2).
+    the edge element has length edge_fraction * (1 - c^2); edge_grading: a plain slip element is at most its
+    distance to u = 1 over this long (default: ``grading``; ``EDGE_GRADING``).
     """
 
     degree: int = 12
@@ -92,6 +93,11 @@ class Resolution:
     c_fraction: float = 0.25
     grading: float = 2.0
     edge_fraction: float = 0.25
+    edge_grading: float | None = None
+
+    @property
+    def toward_edge(self) -> float:
+        return self.grading if self.edge_grading is None else self.edge_grading
 
     @property
     def plain(self) -> int:
@@ -109,12 +115,19 @@ class Resolution:
 #: singular elements at 13 rather than 12 (4 more unknowns) brought p and q at x = c next to c_max from 1.8e-9 to 1.1e-9
 #: of level 4 (3e-10 since p(c) is read from the stick side, ``numeric.core.fields``). Level 0 (all at degree 7) is erratic next to c_max (up to 6.4 times its partner difference,
 #: ``numeric.solutions.solver.ESTIMATE_SAFETY``); lower plain degrees were worse.
+#: Levels 2-4 grade their plain slip elements toward the edge by EDGE_GRADING: at the grading's 2 the element where
+#: the anchors meet (mid-annulus) was as long as its distance to u = 1, where p ~ (1 - x)^(alpha - 1/2) is largest, and
+#: level 2's p there was up to 2.05e-9 of max(1, |p|) off level 4 (nu = 0.45, c = 0.4, x = 0.69; over c = 0.05 ... 0.9,
+#: nu in {-0.5, 0, 0.3, 0.45}, 42 points across the annulus; level 3 within 1.9e-12 of level 4). At 3 it is at most
+#: half that distance: 3.5e-12 there, for one plain element more (178 -> 190 unknowns). Levels 0 and 1 keep the
+#: grading (the field table is stored on level-0 layouts; level 1's estimate factors were measured on its layout).
+EDGE_GRADING = 3.0
 RESOLUTIONS: tuple[Resolution, ...] = (
     Resolution(degree=7, singular_degree=2),
     Resolution(degree=10, singular_degree=3, plain_degree=9),
-    Resolution(degree=13, singular_degree=3, plain_degree=11),
-    Resolution(degree=15, singular_degree=3),
-    Resolution(degree=18, singular_degree=3),
+    Resolution(degree=13, singular_degree=3, plain_degree=11, edge_grading=EDGE_GRADING),
+    Resolution(degree=15, singular_degree=3, edge_grading=EDGE_GRADING),
+    Resolution(degree=18, singular_degree=3, edge_grading=EDGE_GRADING),
 )
 
 
@@ -122,7 +135,7 @@ def partner(res: Resolution) -> Resolution:
     """The resolution one degree lower: its difference from ``res`` is the error estimate."""
     return Resolution(res.degree - 1, res.singular_degree, res.edge_singular_degree,
                       None if res.plain_degree is None else res.plain_degree - 1, res.c_fraction, res.grading,
-                      res.edge_fraction)
+                      res.edge_fraction, res.edge_grading)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -206,8 +219,8 @@ def layout(c: float, gap: float, res: Resolution) -> Layout:
     Le = min(res.edge_fraction * w, w - Lc)
     top = w - Le
     a = Lc  # offset from c^2
-    while a < top * (1.0 - 1e-15):  # no longer than (q - 1) x the distance to c^2, nor the distance to 1 / q
-        step = min(a * (q - 1.0), (w - a) / q)
+    while a < top * (1.0 - 1e-15):  # no longer than (q - 1) x the distance to c^2, nor the distance to 1 over the edge grading
+        step = min(a * (q - 1.0), (w - a) / res.toward_edge)
         b = top if a + step > top - SLIVER * step else a + step
         if a < 0.5 * w:
             els.append((PLAIN, SLIP, AT_C2, a, b, res.plain, 0))

@@ -107,8 +107,8 @@ class Resolution:
 #: Resolution levels 0-4, coarse to fine; level 2 is the default. Levels 1 and 2 hold the plain elements below the
 #: singular ones (degree 9 against 10, 11 against 13): there the plain elements set the error of mu, which then shrinks
 #: regularly with the degree, so the partner one degree lower (``partner``) bounds it. Measured (before EDGE_GRADING)
-#: over 80 (nu, c), nu in [-0.999, 0.4999], 1 - c from 0.999 down to 1.01 (1 - c_max), against degree 24 (mu and P*, relative): level 1 worst
-#: 2.6e-9, level 2 worst 4.9e-11 (median 3e-15; 262 unknowns on average), level 3 8e-13, the estimate above the true
+#: over 80 (nu, c), nu in [-0.999, 0.4999], 1 - c from 0.999 down to 1.01 (1 - c_max), against degree 24 (mu and P*,
+#: relative): level 1 worst 2.6e-9, level 2 worst 4.9e-11 (median 3e-15; 262 unknowns on average), level 3 8e-13, the estimate above the true
 #: error at all 80 for levels 1 and 2. With every element at degree 12 (274 unknowns) level 2 was worst 1.3e-11 but
 #: at nu = 0.3, 1 - c = 1.1 (1 - c_max) 1.2 times above its estimate: the degree-11 partner was the more accurate (even
 #: plain degrees converge worse there; plain 12 under singular 13 fell 1.03 times short at the same point). The
@@ -219,7 +219,8 @@ def layout(c: float, gap: float, res: Resolution) -> Layout:
     Le = min(res.edge_fraction * w, w - Lc)
     top = w - Le
     a = Lc  # offset from c^2
-    while a < top * (1.0 - 1e-15):  # no longer than (q - 1) x the distance to c^2, nor the distance to 1 over the edge grading
+    # no longer than (q - 1) x the distance to c^2, nor the distance to 1 over the edge grading
+    while a < top * (1.0 - 1e-15):
         step = min(a * (q - 1.0), (w - a) / res.toward_edge)
         b = top if a + step > top - SLIVER * step else a + step
         if a < 0.5 * w:

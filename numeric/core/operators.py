@@ -231,13 +231,13 @@ class AbelOperators:
         self._fixed = {key: np.zeros((N, nb)) for key in self.names + (tuple(n + "/x" for n in self.names) if divided else ())}
         # v - v_ref of every point, from the offsets (the anchors c^2 and 1 are w = 1 - c^2 apart): the rows of the upper
         # integral differenced against the reference point's (``AbelMatrices.change``), on the collocation points
+        # (formed without cancellation only below CANCELLATION_FREE_BELOW, where ``_rise`` is set; above, by subtraction)
         self._rise = None
-        self._cancellation_free = False
         if collocated and "upper" in self.names:
-            ref_anchor = anchor[REFERENCE]
-            shift = np.where(anchor == ref_anchor, 0.0, lay.w if ref_anchor == AT_C2 else -lay.w)
-            self._rise = shift + (offset - offset[REFERENCE])
-            self._cancellation_free = lay.c < CANCELLATION_FREE_BELOW
+            if lay.c < CANCELLATION_FREE_BELOW:
+                ref_anchor = anchor[REFERENCE]
+                shift = np.where(anchor == ref_anchor, 0.0, lay.w if ref_anchor == AT_C2 else -lay.w)
+                self._rise = shift + (offset - offset[REFERENCE])
             self._fixed[CHANGE] = np.full((N, nb), np.nan)
         self._fixed["integral"] = np.zeros(nb)
         if divided:
@@ -259,7 +259,7 @@ class AbelOperators:
                             target[cols] = block[0]
                         else:
                             target[t.rows, cols] = block
-        if self._rise is not None:  # the rest of the change by difference (all of it from CANCELLATION_FREE_BELOW up)
+        if CHANGE in self._fixed:  # the rest of the change by difference (all of it from CANCELLATION_FREE_BELOW up)
             upper, change = self._fixed["upper"], self._fixed[CHANGE]
             np.subtract(upper, upper[REFERENCE], out=change, where=np.isnan(change))
         self._nodes = _node_sets(lay, self._terms)
@@ -328,7 +328,7 @@ class AbelOperators:
                 on = slip[k]
                 if np.any(on):
                     Mx[i[on], slip_index[k[on]]] = (Kf[on] * inv_x[k[on]]) @ Pq
-            if upper and self._cancellation_free:
+            if upper and self._rise is not None:
                 self._fixed[CHANGE][:, cols] = self._plain_change(smooth, d_lo, L, xq, wq, Pq).reshape(N, -1)
             self._fixed[name][:, cols] = M.reshape(N, -1)
             if slip_k.size:
@@ -409,7 +409,7 @@ class AbelOperators:
             if rows.size:
                 terms.append(_Term(rows, rL * sqrt_outside_kernel(Sc, one_minus_c, d[rows], away), So, Po, True, projector))
                 changes.append((rows, Sc, one_minus_c, None, projector))
-            if upper and self._cancellation_free:  # ``AbelMatrices.change`` where the reference is in the same group
+            if upper and self._rise is not None:  # ``AbelMatrices.change`` where the reference is in the same group
                 for rows, nodes, one_less, weights, project in changes:
                     if REFERENCE in rows:
                         rows = rows[rows != REFERENCE]

@@ -404,9 +404,11 @@ def family_weight(family: Family, s: np.ndarray) -> np.ndarray:
     return np.asarray(s, dtype=float) ** family.parameter
 
 
-def family_values(family: Family, s: np.ndarray) -> np.ndarray:
-    """w(s) P_j(2 s - 1), j = 0 .. degree: shape s.shape + (degree + 1,)."""
-    return family_weight(family, s)[..., None] * legendre01(family.degree, s)
+def family_values(family: Family, s: np.ndarray, legendre: np.ndarray | None = None) -> np.ndarray:
+    """w(s) P_j(2 s - 1), j = 0 .. degree: shape s.shape + (degree + 1,). ``legendre``: ``legendre01`` at s to this
+    degree or a higher one (its leading columns are the lower degrees' own, bit for bit), where the caller has it."""
+    P = legendre01(family.degree, s) if legendre is None else legendre[..., : family.degree + 1]
+    return family_weight(family, s)[..., None] * P
 
 
 def _family_moments(family: Family, n: int) -> np.ndarray:

@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
@@ -151,6 +152,20 @@ class PlaneOperators:
             family_values(fam, pts.s[owned])
         self._singular = np.flatnonzero(lay.kind != PLAIN)
         self._geometry: dict[int, CauchyGeometry] = {}  # per singular element, formed at the first exponent
+
+    @cached_property
+    def slip_rows(self) -> slice:
+        """The points (rows) of the slip elements before the edge one, one block (the points go element by element in
+        layout order): where ``PlaneCollocationSystem.slip_odd`` holds the strain's transforms
+        (``numeric.core.plane_fields``)."""
+        lay = self.layout
+        slip = lay.elements(SLIP)
+        rows = np.flatnonzero(np.isin(self.points.owner[: self.n_collocation], slip[lay.kind[slip] != EDGE]))
+        if rows.size == 0:
+            return slice(0, 0)
+        if not np.array_equal(rows, np.arange(rows[0], rows[-1] + 1)):
+            raise ValueError("the slip elements' points are not one block")
+        return slice(int(rows[0]), int(rows[-1]) + 1)
 
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
@@ -274,6 +289,8 @@ class PlaneCollocationSystem:
     slip_columns: np.ndarray
     integrals: np.ndarray   # int_0^1 of every basis function (layout order)
     pinned: bool            # whether p's singular family on the stick end is pinned to 0 (``plane_collocation_system``)
+    slip_odd: np.ndarray    # H of every basis function's odd reflection (columns, layout order) at the points of
+    #                         the slip elements before the edge one (``PlaneOperators.slip_rows``): the slip's strain
     balance: Balance | None = None  # the normal rows' near-null combination replaced (``plane_collocation_system``)
 
     @property
@@ -417,7 +434,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
         shear[r, -1] = -odd_l[N]
         mode_stick[r] = odd_s[N]
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
-                                  balance)
+                                  T.odd[ops.slip_rows], balance)
 
 
 def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta: float) -> PlaneCollocationSystem:
@@ -425,7 +442,8 @@ def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta:
     return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, base.stick + delta * rate.stick,
                                   base.normal + delta * rate.normal, base.shear + delta * rate.shear,
                                   base.mode_stick + delta * rate.mode_stick, base.rhs, base.stick_columns,
-                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned, base.balance)
+                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned,
+                                  base.slip_odd + delta * rate.slip_odd, base.balance)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -475,5 +493,5 @@ def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: flo
                                   (other.normal - base.normal) / step, (other.shear - base.shear) / step,
                                   (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),
                                   base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step,
-                                  base.pinned, base.balance)
+                                  base.pinned, (other.slip_odd - base.slip_odd) / step, base.balance)
     return LinearisedPlaneSystem(base, rate)

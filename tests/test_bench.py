@@ -8,6 +8,7 @@ printed P* for mesh (ii). The headline ratios are checked on synthetic rows.
 """
 
 import math
+import statistics
 import time
 
 import pytest
@@ -28,7 +29,7 @@ from numeric.studies.bench import (
     headline,
     time_to_reach,
 )
-from numeric.studies.timing import clear_caches, median_time
+from numeric.studies.timing import Yardstick, clear_caches, median_time
 
 TINY = Config(cases=(Case(0.0, 1.0),), scheme_h=(), scheme_n=(50,), graded_meshes=(), levels=(),
               methods=frozenset({"scheme", "asymptotic"}), setup=False, budget=0.0, max_runs=1)
@@ -126,6 +127,18 @@ def test_median_time_loops_fast_calls():
 
     median_time(call, budget=0.0, max_runs=5)  # budget 0: exactly one run
     assert count[0] > 10  # a microsecond call is repeated within the run (~2 ms)
+
+
+def test_the_yardstick_is_timed_again_before_each_case_and_its_time_is_the_median_of_those_runs():
+    order = []
+    yardstick = Yardstick(lambda: order.append(time.sleep(2e-3) or "yardstick"), budget=10.0, max_runs=1)
+    for _ in range(3):
+        yardstick.case(lambda: order.append(time.sleep(4e-3) or "case"))
+    # each case: the yardstick (a warm-up and one timed run), then the case (a warm-up and one timed run)
+    assert order == (["yardstick"] * 2 + ["case"] * 2) * 3
+    assert len(yardstick.timings) == 3
+    assert yardstick.seconds == statistics.median(yardstick.timings)
+    assert 2e-3 <= yardstick.seconds < 1.0  # a 2 ms sleep: at least that; 1 s guards against a unit slip
 
 
 def test_clear_caches_empties_the_solver_caches():

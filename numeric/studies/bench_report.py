@@ -114,7 +114,9 @@ def _side_by_side(bench: Benchmark) -> list[str]:
         return []
     lines = ["## Side by side with the paper's scheme at h = 0.01 (one run)", "",
              "Each task returns the full solution (mu or c, P*, and p, q, u at four points); times are medians per "
-             "call, the ratio is to the paper's scheme at h = 0.01 (nu = 0.25, c = 0.5) timed in the same run, the "
+             "call, the ratio is to the paper's scheme at h = 0.01 (nu = 0.25, c = 0.5) timed in the same run (before "
+             "every case of every task; its time is the median of all those runs, as the load of a shared machine "
+             "drifts), the "
              "error the worst relative error of mu or 1 - c and of P* over the points. The solver's error estimate "
              "(a second solve one degree lower) is formed when first read: the rows 'with its error estimate' read "
              "it, the others do not. Before each timed call the solver's cache of Abel integrals (kept per stick "
@@ -172,7 +174,7 @@ def _plane(bench: Benchmark) -> list[str]:
              "From `numeric.studies.plane_bench`: the strip punch (`numeric.plane.flat_punch`) for the same tasks as "
              "above (c <= 0.95 at the same (nu, c); near the plane c_max of nu = 0, -1/2, 0.3), the plane "
              "counterpart of the paper's scheme at its resolution, and the law route below c = 1e-5. The first ratio "
-             "is to the plane scheme at h = 0.02 timed here, the second to the axisymmetric solver's same task in the "
+             "is to the plane scheme at h = 0.02 timed here (again before each case, the median of all its runs), the second to the axisymmetric solver's same task in the "
              "table above; the error is of mu (given c) or 1 - c (given mu) against the median of degrees 26 and 28 "
              "(two layouts, `numeric.studies.plane_bench.reference_mu`; not level 4, whose own layout is 5e-10 off at "
              "nu = 0.25, c = 0.5, a pole of the eigen functional near the root). Where a layout is near such a pole the "

@@ -38,7 +38,7 @@ from numeric.core.plane_fields import PlaneField
 from numeric.solutions.plane_law import law_fit
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import PLANE_LEVELS
-from numeric.studies.timing import SideBySide, median_time
+from numeric.studies.timing import SideBySide, Yardstick
 
 __all__ = ["INSIDE", "NEAR", "SCHEME_H", "SCHEME_TASK", "REFERENCE", "REFERENCE_RESOLUTIONS", "reference_mu",
            "plane_side_by_side"]
@@ -82,11 +82,12 @@ def _with_error(s) -> tuple:
 
 def plane_side_by_side(budget: float, max_runs: int) -> list[SideBySide]:
     """The plane tasks, each timed (median per call over runs within ``budget`` seconds or ``max_runs`` runs) with its
-    worst relative error; ``ratio`` is to the plane scheme at h = 0.02 timed here."""
+    worst relative error; ``ratio`` is to the plane scheme at h = 0.02 timed here, again before each case of each task
+    (``Yardstick``: its time is the median of all those runs)."""
     clear = plane_operators_at.cache_clear
     scheme = plane_solve_friction(0.5, 0.25, h=SCHEME_H)
-    t_scheme = median_time(lambda: plane_solve_friction(0.5, 0.25, h=SCHEME_H), budget=budget, max_runs=max_runs)
-    out = [SideBySide(SCHEME_TASK, t_scheme, 1.0, abs(scheme.mu / reference_mu(0.25, 0.5) - 1), 1, REFERENCE)]
+    yardstick = Yardstick(lambda: plane_solve_friction(0.5, 0.25, h=SCHEME_H), budget=budget, max_runs=max_runs)
+    measured: list[tuple[str, float, float, int, str]] = []  # task, seconds, error, points, reference
 
     def task(label: str, calls: list[tuple[Callable[[], object], Callable[[object], float]]], reference: str,
              returns: Callable[[object], tuple] = _full, before: Callable[[], object] = clear) -> None:
@@ -94,9 +95,8 @@ def plane_side_by_side(budget: float, max_runs: int) -> list[SideBySide]:
         for call, error in calls:
             before()
             errors.append(error(call()))
-            times.append(median_time(lambda call=call: returns(call()), before=before, budget=budget, max_runs=max_runs))
-        t = statistics.median(times)
-        out.append(SideBySide(label, t, t / t_scheme, max(errors), len(calls), reference))
+            times.append(yardstick.case(lambda call=call: returns(call()), before=before))
+        measured.append((label, statistics.median(times), max(errors), len(calls), reference))
 
     def given_c(nu: float, c: float):
         mu = reference_mu(nu, c)
@@ -123,4 +123,6 @@ def plane_side_by_side(budget: float, max_runs: int) -> list[SideBySide]:
     reference = "the solver's iteration at c itself (level 3)"
     task("plane law route, c = 1e-6, first call per nu (the fit)", laws, reference, lambda s: (s.mu,), law_fit.cache_clear)
     task("plane law route, c = 1e-6, later calls", laws, reference, lambda s: (s.mu,), lambda: None)
-    return out
+    t_scheme = yardstick.seconds
+    return [SideBySide(SCHEME_TASK, t_scheme, 1.0, abs(scheme.mu / reference_mu(0.25, 0.5) - 1), 1, REFERENCE)] + [
+        SideBySide(label, t, t / t_scheme, error, points, reference_) for label, t, error, points, reference_ in measured]

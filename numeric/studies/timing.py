@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SideBySide", "median_time", "clear_caches", "power_law_time"]
+__all__ = ["SideBySide", "Yardstick", "median_time", "clear_caches", "power_law_time"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,6 +58,38 @@ def median_time(call: Callable[[], object], *, before: Callable[[], object] | No
         times.append(elapsed / inner)
         total += elapsed
     return statistics.median(times)
+
+
+class Yardstick:
+    """A call that tasks are timed against, timed again before each of their cases (``case``): its time
+    (``seconds``) is the median of all those runs, so that the ratios do not carry the drift of a shared machine's
+    load over the seconds the tasks take (single medians of the paper's scheme were seen 5.2 ... 7.6 ms apart)."""
+
+    def __init__(self, call: Callable[[], object], *, before: Callable[[], object] | None = None, budget: float = 0.5,
+                 max_runs: int = 5) -> None:
+        self._call, self._before, self.budget, self.max_runs = call, before, budget, max_runs
+        self._times: list[float] = []
+
+    def run(self) -> None:
+        """Time the yardstick once more (a median over its runs)."""
+        self._times.append(median_time(self._call, before=self._before, budget=self.budget, max_runs=self.max_runs))
+
+    @property
+    def timings(self) -> tuple[float, ...]:
+        """Its timings so far, seconds per call (one per ``run``)."""
+        return tuple(self._times)
+
+    @property
+    def seconds(self) -> float:
+        """The median of its timings so far (one is made if there is none)."""
+        if not self._times:
+            self.run()
+        return statistics.median(self._times)
+
+    def case(self, call: Callable[[], object], *, before: Callable[[], object] | None = None, warm: bool = False) -> float:
+        """``median_time`` of one case of a task, with the same budget and runs, after timing the yardstick again."""
+        self.run()
+        return median_time(call, before=before, budget=self.budget, max_runs=self.max_runs, warm=warm)
 
 
 def clear_caches() -> tuple[str, ...]:

@@ -691,25 +691,60 @@ def test_the_slip_converges(nu, c):
     assert np.all(np.isfinite(got)) and np.max(np.abs(got - fine.slip(x))) < 1e-11
 
 
-@pytest.mark.parametrize("nu, c", [(-0.5, 0.9), (0.0, 0.99), (0.3, 0.05), (0.499, 0.3)])
-def test_the_interpolated_strain_matches_the_transforms_inside_the_slip_elements(nu, c):
-    # before the edge element the strain is interpolated in the slip elements' bases at their collocation points
-    # (PlaneField._strain_coefficients); against H q - gamma p from the transforms of every basis function at 30
-    # interior points of each such element (chart 0.05 ... 0.95), relative to max(1, |strain|): measured at most
-    # 1.1e-13 at these and three more (nu, c), the interpolation's conditioning times the rounding of H q; bound 1e-12.
-    # (Within 1e-6 of an element end the transforms of the discrete solution carry its small jumps there times a
-    # logarithm, up to 3e-9 at nu = 0, c = 0.99; the interpolant has none, and the slip, the integral, is the same
-    # to 5e-15: measured over 42 (nu, c) against the transforms at every node; test_the_slip_converges above.)
-    from numeric.core.plane_charts import EDGE, SLIP, locate
+def _transformed_strain(field, x):
+    """H q - gamma p at x from the transforms of every basis function there: the reference of the interpolated strain."""
+    from numeric.core.plane_charts import locate
+    return field.transformed_strain(locate(field.layout, x))
+
+
+def _edge_points(field):
+    """50 points across the edge element (chart 0.001 ... 0.999) and 8 toward x = 1 (1 - x down to 1e-8 of its length)."""
+    from numeric.core.plane_charts import EDGE
+    lay = field.layout
+    e = int(np.flatnonzero(lay.kind == EDGE)[0])
+    start = 1.0 + lay.origin[e] + lay.sigma[e] * lay.length[e]
+    return np.concatenate([start + (1 - start) * np.linspace(0.001, 0.999, 50), 1 - (1 - start) * np.logspace(-8, -1, 8)])
+
+
+@pytest.mark.parametrize("nu, c", [(-0.5, 0.9), (0.0, 0.99), (0.3, 0.05), (0.499, 0.3), (0.3, 0.9999), (-0.9, 0.86)])
+def test_the_interpolated_strain_matches_the_transforms_on_the_slip_elements(nu, c):
+    # the strain is interpolated at the slip elements' collocation points (PlaneField.strain): before the edge element
+    # in their bases, on it as its singular part from the coefficients and a polynomial. Against H q - gamma p from the
+    # transforms of every basis function, relative to max(1, |strain|): at 30 interior points of each element before
+    # the edge (chart 0.05 ... 0.95) measured at most 6.4e-13 (nu = 0.3, c = 0.9999; 1.6e-13 elsewhere), on the edge
+    # element (``_edge_points``; the strain there up to 1.4e4) 6.3e-13 (nu = 0.45, c = 0.999; 5.2e-14 for 1 - c >=
+    # 0.01), over these and eight more (nu, c): the interpolation's conditioning times the rounding of H q where the
+    # slip zone is small; bound 3e-12. (Within 1e-6 of an element end before the edge the transforms of the discrete solution carry
+    # its small jumps there times a logarithm, up to 3e-9 at nu = 0, c = 0.99; the interpolant has none, and the slip,
+    # the integral, is the same to 5e-15: measured over 42 (nu, c) against the transforms at every node;
+    # test_the_slip_converges above.)
+    from numeric.core.plane_charts import EDGE, SLIP
     field = plane.flat_punch(nu=nu, c=c).field
     lay = field.layout
     inner = [e for e in lay.elements(SLIP) if lay.kind[e] != EDGE]
     assert inner
-    for e in inner:
-        start = lay.anchor_value(lay.anchor[e]) + lay.origin[e]
-        x = start + lay.sigma[e] * lay.length[e] * np.linspace(0.05, 0.95, 30)
-        exact = field.transformed_strain(locate(lay, x))
-        assert np.max(np.abs(field.strain(x) - exact)) < 1e-12 * max(1.0, np.max(np.abs(exact)))
+    for x in [lay.anchor_value(lay.anchor[e]) + lay.origin[e] + lay.sigma[e] * lay.length[e] * np.linspace(0.05, 0.95, 30)
+              for e in inner] + [_edge_points(field)]:
+        exact = _transformed_strain(field, x)
+        assert np.max(np.abs(field.strain(x) - exact) / np.maximum(1.0, np.abs(exact))) < 3e-12
+
+
+@pytest.mark.parametrize("nu", [0.0, -0.5])
+def test_the_edge_strain_at_mu_inf_has_the_logarithm(nu):
+    # at theta = pi/2 (the limit problem solved for c_max) the edge exponent alpha - 1/2 is 0: p = 0 there and the
+    # singular part of H q is log(s) Q(s) / pi (PlaneField._edge_singular_strain's limit); against the transforms as
+    # above: measured 7.9e-14 (nu = 0) and 1.9e-14 of max(1, |strain|), bound 3e-12 as above
+    from asymptotics.materials import gamma_from_nu
+    from numeric.core.plane_eigenvalue import plane_given_theta
+    from numeric.core.plane_guess import gap_max
+    from numeric.solutions.plane_solver import PLANE_LEVELS
+    g = float(gamma_from_nu(nu))
+    gap = gap_max(g)  # the guess table's 1 - c_max: the secant's start
+    field = PlaneField(plane_given_theta(0.5 * math.pi, g, math.log((1 - gap) / gap), PLANE_LEVELS[2]))
+    assert field.alpha == 0.5
+    x = _edge_points(field)
+    exact = _transformed_strain(field, x)
+    assert np.max(np.abs(field.strain(x) - exact) / np.maximum(1.0, np.abs(exact))) < 3e-12
 
 
 @pytest.mark.parametrize("nu, c", [(0.45, 0.05), (0.0, 0.99), (-0.9, 0.5)])

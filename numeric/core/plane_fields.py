@@ -7,9 +7,9 @@ singular at c.
 
 The slip: with u = u_x G / ((1 - nu) P) (u_x the tangential surface displacement, P the load per
 unit length), du/dx = H q - gamma p (the tangential surface relation, ``asymptotics.plane``), which
-vanishes on the stick zone, so u(x) = int_c^x (H q - gamma p) dt on the slip zone (the strain interpolated in the
-slip elements' bases at their collocation points, where the system holds H q; on the edge element from the transforms
-at the nodes: ``PlaneField.strain``); the integrand
+vanishes on the stick zone, so u(x) = int_c^x (H q - gamma p) dt on the slip zone (the strain interpolated at the
+slip elements' collocation points, where the system holds H q: in their bases before the edge element, and on it as its
+singular part, known from the coefficients, and a polynomial: ``PlaneField.strain``); the integrand
 behaves like (t - c)^beta (and its logarithmic limit) at c and (1 - t)^(alpha - 1/2) at 1, and is integrated
 by a composite Gauss rule graded toward both ends of [c, x] (pieces of ratio 1/2) whose innermost piece is
 taken in s = h v^8, where those end behaviours become v^7 times a smooth function of v.
@@ -29,6 +29,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
+from numeric.core.charts import h_beta
 from numeric.core.plane_cauchy import family_values, legendre01
 from numeric.core.plane_charts import AT_ONE, EDGE, PointSet, element_families, locate
 from numeric.core.plane_eigenvalue import PlaneEigensolution
@@ -144,35 +145,77 @@ class PlaneField:
         return p.reshape(x.shape), (np.sign(x).ravel() * q).reshape(x.shape)
 
     @cached_property
-    def _strain_coefficients(self) -> np.ndarray:
-        """The strain H q - gamma p on the slip elements before the edge one in their own bases (layout columns; 0
-        elsewhere): interpolated at their collocation points, where the system holds H q
-        (``PlaneCollocationSystem.slip_odd``). There the strain has the local behaviour of p and q (smooth, and
-        |x - c|^(1/2 - alpha) at c), which the bases carry: fitted by least squares on 40 points of each such element,
-        its transforms left a residual of at most 1.8e-14 of the largest strain (nu = -1/2 ... 0.45, c = 0.3 ... 0.9).
-        Measured: the interpolant within 1.1e-13 of max(1, |strain|) of the transforms at interior points (7 (nu, c),
-        nu = -0.9 ... 0.499); within 1e-6 of an element end the transforms of the discrete solution carry its small
-        jumps there times a logarithm (up to 3e-9 at nu = 0, c = 0.99), which the interpolant does not, and the slip,
-        their integral, is the same to 5e-15 of max(1, |u|) over 42 (nu, c) from c = 1e-4 to 0.9999 (the cylinder's
-        3e-15), at a quarter of the time (one point at c = 1/2: 5.8 ms against 1.8 ms). At the edge the strain also
-        has a regular part beside (1 - x)^(alpha - 1/2) (a fit on the edge element's own basis is 1e-5 off), so the
-        edge element is not interpolated (``strain``)."""
+    def _strain_at_slip_points(self) -> tuple[PointSet, np.ndarray]:
+        """The slip elements' collocation points and H q - gamma p there, H q from the system
+        (``PlaneCollocationSystem.slip_odd``)."""
         ops = self.solution.operators
         points = _subset(ops.points, ops.slip_rows)
-        hilbert = self.solution.system.slip_odd @ self._q  # H q at those points
+        return points, self.solution.system.slip_odd @ self._q - self.gamma * (self._basis_at(points) @ self._p)
+
+    @cached_property
+    def _strain_coefficients(self) -> np.ndarray:
+        """The strain H q - gamma p on the slip elements before the edge one in their own bases (layout columns; 0
+        elsewhere), interpolated at their collocation points (``_strain_at_slip_points``). There the strain has the
+        local behaviour of p and q (smooth, and |x - c|^(1/2 - alpha) at c), which the bases carry: fitted by least
+        squares on 40 points of each such element, its transforms left a residual of at most 1.8e-14 of the largest
+        strain (nu = -1/2 ... 0.45, c = 0.3 ... 0.9). Measured: the interpolant within 1.1e-13 of max(1, |strain|) of
+        the transforms at interior points (7 (nu, c), nu = -0.9 ... 0.499); within 1e-6 of an element end the
+        transforms of the discrete solution carry its small jumps there times a logarithm (up to 3e-9 at nu = 0,
+        c = 0.99), which the interpolant does not, and the slip, their integral, is the same to 5e-15 of max(1, |u|)
+        over 42 (nu, c) from c = 1e-4 to 0.9999 (the cylinder's 3e-15), at a quarter of the time (one point at
+        c = 1/2: 5.8 ms against 1.8 ms)."""
+        points, strain = self._strain_at_slip_points
         B = self._basis_at(points)
         out = np.zeros(self._p.size)
         for e in np.unique(points.owner):
+            if self.layout.kind[e] == EDGE:
+                continue
             mine = np.flatnonzero(points.owner == e)
             cols = slice(int(self._starts[e]), int(self._starts[e + 1]))
-            out[cols] = np.linalg.solve(B[mine, cols], hilbert[mine]) - self.gamma * self._p[cols]
+            out[cols] = np.linalg.solve(B[mine, cols], strain[mine])
         return out
+
+    def _edge_singular_strain(self, pts: PointSet) -> np.ndarray:
+        """The part of the strain on the edge element that is not a polynomial in its chart s (points on it).
+
+        On the edge element q = s^lam Q(s), lam = alpha - 1/2, Q a polynomial (the element's coefficients), and
+        PV int_0^1 s^lam P_j ds/(s - y) = -pi cot(pi lam) y^lam P_j(y) + a function analytic on [0, 1)
+        (``numeric.core.plane_cauchy.power_cauchy``: V_lam, and the divided differences of P_j): so H q has
+        -sigma cot(pi lam) y^lam Q(y) (sigma the chart's orientation) beside an analytic part. With
+        y^lam = 1 + lam h_lam(y) the polynomial -sigma cot(pi lam) Q goes to the analytic part, and what is left,
+        -sigma lam cot(pi lam) h_lam(y) Q(y), stays finite as lam -> 0 (mu -> inf: log y Q / pi). With -gamma p
+        (s^lam times a polynomial) it is this part."""
+        lay, e = self.layout, self._edge
+        lam = self.alpha - 0.5
+        lam_cot = 1.0 / math.pi if lam == 0.0 else lam / math.tan(math.pi * lam)
+        cols = slice(int(self._starts[e]), int(self._starts[e + 1]))
+        Q = legendre01(lay.degree, pts.s) @ self._q[cols]
+        with np.errstate(divide="ignore", invalid="ignore"):  # at x = 1 itself (the caller's)
+            return -lay.sigma[e] * lam_cot * h_beta(lam, pts.s) * Q - self.gamma * (self._basis_at(pts) @ self._p)
+
+    @cached_property
+    def _edge(self) -> int:
+        return int(np.flatnonzero(self.layout.kind == EDGE)[0])
+
+    @cached_property
+    def _edge_strain_coefficients(self) -> np.ndarray:
+        """The strain on the edge element less ``_edge_singular_strain``, analytic there, interpolated in Legendre
+        polynomials of its chart (degree + 1 of them) at its collocation points. Measured against the transforms of
+        every basis function at 58 points of the edge element (chart 0.001 ... 0.999 and 1 - x down to 1e-8 of its
+        length), 14 (nu, c), nu = -0.9 ... 0.499, c = 1e-3 ... 0.9999: within 6.3e-13 of max(1, |strain|) (the strain
+        there up to 1.4e4; 5.2e-14 where 1 - c >= 0.01), and at theta = pi/2 (lam = 0, nu = 0, -1/2) 7.9e-14; a fit in
+        the edge basis alone was 1e-5 off. The slip from it is the same as from the transforms at every node to
+        1.1e-16 of max(1, |u|) (58 cases: 33 (nu, c) given c, 25 (nu, mu) given mu up to 1e8; the cylinder's 4e-17)."""
+        points, strain = self._strain_at_slip_points
+        mine = np.flatnonzero(points.owner == self._edge)
+        edge = _subset(points, mine)
+        return np.linalg.solve(legendre01(self.layout.degree, edge.s), strain[mine] - self._edge_singular_strain(edge))
 
     def strain(self, t: np.ndarray, offset_from_one: np.ndarray | None = None) -> np.ndarray:
         """du/dx = H q - gamma p at points c < t < 1 of the slip zone; ``offset_from_one``: t - 1 exactly, if known.
 
-        Before the edge element from its interpolation in the slip elements' bases (``_strain_coefficients``), on
-        the edge element from the transforms there (``transformed_strain``)."""
+        Interpolated at the slip elements' collocation points: before the edge element in their bases
+        (``_strain_coefficients``), on it as its non-polynomial part and a polynomial (``_edge_strain_coefficients``)."""
         t = np.asarray(t, dtype=float).ravel()
         lay = self.layout
         pts = locate(lay, t, offset_from_one=offset_from_one)
@@ -182,12 +225,15 @@ class PlaneField:
             inner = _subset(pts, ~edge)
             out[~edge] = self._basis_at(inner) @ self._strain_coefficients
         if np.any(edge):
-            out[edge] = self.transformed_strain(_subset(pts, edge))
+            on_edge = _subset(pts, edge)
+            out[edge] = (self._edge_singular_strain(on_edge)
+                         + legendre01(lay.degree, on_edge.s) @ self._edge_strain_coefficients)
         return out
 
     def transformed_strain(self, pts: PointSet) -> np.ndarray:
-        """H q - gamma p at located points from the transforms of every basis function there (``PlaneOperators``): at
-        element ends single basis functions' transforms are logarithmic, so the points lie off them."""
+        """H q - gamma p at located points from the transforms of every basis function there (``PlaneOperators`` at
+        the points; at element ends single basis functions' transforms are logarithmic, so the points lie off them):
+        what ``strain`` interpolates, formed directly (the tests' reference; a few ms a call)."""
         T = PlaneOperators(self.layout, pts).transforms(self.alpha, modes=False)
         return T.odd @ self._q - self.gamma * (T.values @ self._p)
 

@@ -155,12 +155,11 @@ class PlaneOperators:
 
     @cached_property
     def slip_rows(self) -> slice:
-        """The points (rows) of the slip elements before the edge one, one block (the points go element by element in
-        layout order): where ``PlaneCollocationSystem.slip_odd`` holds the strain's transforms
+        """The points (rows) of the slip elements, the edge one included, one block (the points go element by element
+        in layout order): where ``PlaneCollocationSystem.slip_odd`` holds the strain's transforms
         (``numeric.core.plane_fields``)."""
         lay = self.layout
-        slip = lay.elements(SLIP)
-        rows = np.flatnonzero(np.isin(self.points.owner[: self.n_collocation], slip[lay.kind[slip] != EDGE]))
+        rows = np.flatnonzero(np.isin(self.points.owner[: self.n_collocation], lay.elements(SLIP)))
         if rows.size == 0:
             return slice(0, 0)
         if not np.array_equal(rows, np.arange(rows[0], rows[-1] + 1)):
@@ -290,7 +289,7 @@ class PlaneCollocationSystem:
     integrals: np.ndarray   # int_0^1 of every basis function (layout order)
     pinned: bool            # whether p's singular family on the stick end is pinned to 0 (``plane_collocation_system``)
     slip_odd: np.ndarray    # H of every basis function's odd reflection (columns, layout order) at the points of
-    #                         the slip elements before the edge one (``PlaneOperators.slip_rows``): the slip's strain
+    #                         the slip elements (``PlaneOperators.slip_rows``): the slip's strain
     balance: Balance | None = None  # the normal rows' near-null combination replaced (``plane_collocation_system``)
 
     @property

@@ -151,7 +151,8 @@ class PlaneOperators:
         self._fixed_values[owned[:, None], self.starts[pts.owner[owned]][:, None] + np.arange(d + 1)[None, :]] = \
             family_values(fam, pts.s[owned])
         self._singular = np.flatnonzero(lay.kind != PLAIN)
-        self._geometry: dict[int, CauchyGeometry] = {}  # per singular element, formed at the first exponent
+        # per group of singular elements that carry one family (``transforms``), formed at the first exponent
+        self._geometry: dict[tuple[int, ...], CauchyGeometry] = {}
 
     @cached_property
     def slip_rows(self) -> slice:
@@ -176,30 +177,41 @@ class PlaneOperators:
         even, odd = self._fixed_even.copy(), self._fixed_odd.copy()
         values, integrals = self._fixed_values.copy(), self.integrals_fixed.copy()
         N = pts.size
+        # the singular elements that carry one family (the stick and slip ends share h_beta) in one call of the
+        # transforms on all their points and mirrors: its cost is mostly per call, not per point
+        groups: dict[tuple, list[int]] = {}
         for e in self._singular:
-            fams = element_families(lay, int(e), alpha)
-            col = int(self.starts[e]) + (0 if lay.kind[e] == EDGE else lay.degree + 1)
-            fam = fams[-1]
-            if e not in self._geometry:
-                both = np.concatenate([self._y[:, e], self._y_mirror[:, e]])
-                self._geometry[e] = cauchy_geometry(fam.kind, fam.degree, both)
-            I = family_cauchy(fam, self._geometry[e].y, self._geometry[e])
-            sig = lay.sigma[e] / math.pi
-            plus, minus = sig * I[:N], sig * I[N:]
-            cols = slice(col, col + fam.degree + 1)
-            even[:, cols] = plus - minus
-            odd[:, cols] = plus + minus
-            mine = pts.owner == e
-            if np.any(mine):
-                values[mine, cols] = family_values(fam, pts.s[mine])
-            integrals[cols] = lay.length[e] * family_integrals(fam)
+            fam = element_families(lay, int(e), alpha)[-1]
+            groups.setdefault((fam.kind, fam.parameter, fam.degree), []).append(int(e))
+        for elements in groups.values():
+            fam = element_families(lay, elements[0], alpha)[-1]
+            key = tuple(elements)
+            if key not in self._geometry:
+                both = np.concatenate([np.concatenate([self._y[:, e], self._y_mirror[:, e]]) for e in elements])
+                self._geometry[key] = cauchy_geometry(fam.kind, fam.degree, both)
+            I_all = family_cauchy(fam, self._geometry[key].y, self._geometry[key])
+            moments = family_integrals(fam)
+            for i, e in enumerate(elements):
+                I = I_all[2 * N * i: 2 * N * (i + 1)]
+                col = int(self.starts[e]) + (0 if lay.kind[e] == EDGE else lay.degree + 1)
+                sig = lay.sigma[e] / math.pi
+                plus, minus = sig * I[:N], sig * I[N:]
+                cols = slice(col, col + fam.degree + 1)
+                even[:, cols] = plus - minus
+                odd[:, cols] = plus + minus
+                mine = pts.owner == e
+                if np.any(mine):
+                    values[mine, cols] = family_values(fam, pts.s[mine])
+                integrals[cols] = lay.length[e] * moments
         length = float(lay.length[lay.stick_end + 1])
         if not modes:
             return Transforms(even, odd, values, integrals, None, None, length)
         beta = max(0.5 - alpha, MODE_BETA_MIN)
+        ends = (lay.stick_end, lay.stick_end + 1)
+        I_all = mode_cauchy(beta, np.concatenate([np.concatenate([self._y[:, e], self._y_mirror[:, e]]) for e in ends]))
         parts = []
-        for e in (lay.stick_end, lay.stick_end + 1):
-            I = mode_cauchy(beta, np.concatenate([self._y[:, e], self._y_mirror[:, e]]))
+        for i, e in enumerate(ends):
+            I = I_all[2 * N * i: 2 * N * (i + 1)]
             sig = lay.sigma[e] / math.pi
             plus, minus = sig * I[:N], sig * I[N:]
             mine = pts.owner == e

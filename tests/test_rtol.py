@@ -71,10 +71,11 @@ GIVEN_C_ROUTES = [
     (0.45, 0.5, 1e-4, "table"),  # the table (cost 2e-4 s) before the second-order law (1e-3 s), both meet 1e-4
     (0.45, 0.5, 1e-6, "solver level 0"),
     (0.25, 0.5, 1e-2, "table"),
-    (0.25, 0.5, 1e-7, "solver level 0"),  # level 0's error estimate (ten times its partner difference) meets 1e-7
+    (0.25, 0.5, 1e-7, "solver level 0"),  # level 0's error estimate (twice its difference from level 1) meets 1e-7
     (0.25, 0.5, 1e-8, "solver level 1"),  # the first level whose typical accuracy (1e-9) meets 1e-8
-    # next to c_max level 0's estimate (1.4e-6 mu; its true error 9.4e-9 mu against level 4) does not: one level up
-    (0.25, NEAR_C_MAX_025, 1e-7, "solver level 1"),
+    # next to c_max level 0's estimate meets it too (2.5e-9 mu, twice its difference from level 1; its distance from
+    # level 4 1.3e-9 mu); ten times its difference from the partner one degree lower, 1.4e-6 mu, had not
+    (0.25, NEAR_C_MAX_025, 1e-7, "solver level 0"),
     (0.25, 0.5, 1e-10, "solver level 2"),  # the first level whose typical accuracy (1e-11) meets 1e-10
 ]
 

@@ -286,9 +286,11 @@ def test_error_estimate_is_honest_against_level_4_and_the_graded_solver():
 
 
 def test_error_estimate_is_within_tenfold_where_level_4_resolves_it():
-    """Next to c_max (nu = -0.5, 1 - c = 1.1 (1 - c_max), mu = 21) level 2's error (4.8e-11 absolute in mu) is
-    above the rounding floor (1e-11) and level 4 resolves it: the estimate |level 2 - one degree lower| bounds it
-    and lies within 10x of it (measured ratio 0.13)."""
+    """Next to c_max (nu = -0.5, 1 - c = 1.1 (1 - c_max), mu = 21) level 2's error (4.6e-11 absolute in mu) is
+    above the rounding floor (1e-11): the estimate, twice |level 2 - level 3| (9.3e-11), bounds it and lies within 3x
+    of it (measured ratio 0.49; with level 4's own error, 1.05e-11 (its floor), the true ratio lies in 0.38 ... 0.61).
+    Level 4 is 8.9 times more accurate than that estimate (it was 10 times for the partner one degree lower's 3.7e-10,
+    ratio 0.13): bound 5 times."""
     grid = Grid(nus=(-0.5,), mus=(), cs=(), gap_factors=(1.1,), power_law_mus=(), limit_nus=(), limit_mu_gammas=())
     pts = [p for p in sweep(grid) if p.function == "flat_punch(c)"]
     checks, skipped = check_honesty(pts, max_graded=0)
@@ -296,8 +298,8 @@ def test_error_estimate_is_within_tenfold_where_level_4_resolves_it():
     for x in checks:
         assert x.status == "honest", x
     level4 = [x for x in checks if x.reference_kind == "level 4"]
-    assert all(x.resolved and not x.at_floor for x in level4)
-    assert 0.1 <= max(x.ratio for x in level4) <= 1.0
+    assert level4 and all(x.reference_error <= 0.2 * x.bound and not x.at_floor for x in level4)
+    assert 1.0 / 3.0 <= max(x.ratio for x in level4) <= 1.0
 
 
 def test_plateau_of_the_new_system_converges_to_the_graded_solver():

@@ -1,18 +1,17 @@
 """The solver route of ``numeric.flat_punch``: the singular-basis solver of ``numeric.core`` at its levels.
 
-Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is the
-difference between the level and the same problem one polynomial degree lower
-(``numeric.core.charts.partner``; at level 0, and at level 1 within 10 (1 - c_max) of c_max, ten times it,
-``estimate_safety``), at least ``ERROR_FLOOR`` times
-the value (the rounding level of the eigenvalue condition, flat in c down to c = 1e-5 since the rows of (2.2a) are
-differenced and the solves refined, ``numeric.core.operators.collocation_system``) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the
-level's c_max (``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Measured against
-level 4 and the graded solver (``derivations/stability.md``, ``tests/test_singular_solver.py``) the true error of
-the default level lies below this estimate everywhere checked; the default level is at the rounding floor at most
-points, and where it is not and level 4 resolves it the estimate is within a factor 10 at 7 of 8 points (the eighth
-700x pessimistic next to c_max at nu = 0.3, where the partner's plain degree 10 converges poorly). The estimate is
-a second solve as costly as the first, so it is formed when first read
-(``numeric.solutions.solution.DeferredError``), or at once where rtol asks for it.
+Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is twice the difference between
+the level and the same problem at the next level up (levels 0-2; levels 3 and 4: the difference from the partner one
+polynomial degree lower, ``numeric.core.charts.partner``; ``estimate_resolution``, ``ESTIMATE_SAFETY``), at least
+``ERROR_FLOOR`` times the value (the rounding level of the eigenvalue condition, flat in c down to c = 1e-5 since the
+rows of (2.2a) are differenced and the solves refined, ``numeric.core.operators.collocation_system``) and, given c
+within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the level's c_max (``NEAR_C_MAX``; within rounding
+of c_max the answer is the slip limit, mu = inf). Where the next level's error is at most half the level's, the
+estimate lies between 1 and 3 times the true error. Measured against level 4 over 72 (nu, c) (``ESTIMATE_SAFETY``:
+1 - c from 1.001 to 100 (1 - c_max), nu from -1/2 to 0.4, and c = 0.1, 0.5, 0.9): the default level's estimate
+1.0 ... 3.14 times its true error (or the rounding floor), never below it; the partner one degree lower had been up
+to 829 times pessimistic there. The estimate is a second solve, somewhat costlier than the first, so it is formed
+when first read (``numeric.solutions.solution.DeferredError``), or at once where rtol asks for it.
 
 Given c: Newton in theta = atan(mu gamma) from a guess (the Chebyshev table, else the
 second-order law). Given mu: where the table reaches, given-c solves from its c, stepped in
@@ -55,7 +54,7 @@ from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, clos
 from numeric.solutions.solution import DeferredError, FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
-           "ESTIMATE_SAFETY", "NEAR_ESTIMATE_SAFETY", "NEAR_SAFETY_GAPS", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
+           "ESTIMATE_SAFETY", "FINER_ESTIMATE_BELOW", "estimate_resolution", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
            "nearly_adhesive"]
 
 DEFAULT_LEVEL = 2
@@ -76,39 +75,45 @@ NEAR_C_MAX = 1e-6
 #: c within this many units in the last place of c_max (or within twice the distance of the level's c_max from
 #: the closed form, if larger) is c_max to rounding: the answer is the slip limit, mu = inf.
 ROUNDING_ULPS = 4.0
-#: The error estimate of each level is its difference from the partner one degree lower times this factor. Level 0
-#: converges erratically next to c_max: over 80 (nu, c) (``numeric.core.charts.RESOLUTIONS``) its true error was up
-#: to 6.4 times the difference (nu = 0, 1 - c = 1.5 (1 - c_max)), at two points above it; at levels 1-3 never (level 4
-#: is the reference).
-ESTIMATE_SAFETY = (10.0, 1.0, 1.0, 1.0, 1.0)
-#: Level 1 too where 1 - c < NEAR_SAFETY_GAPS (1 - c_max): over 500 random (nu, c) (half with 1 - c from 1.01 to 1000
-#: (1 - c_max)) against level 4 its true error exceeded the difference at 4 of the 65 measurable points there (up to
-#: 1.42 times, nu = 0.04 ... 0.13, 1 - c = 2.5 ... 7 (1 - c_max)), and a fuzz campaign found 4.2 times at nu = 0.095,
-#: 1 - c = 3.1 (1 - c_max); farther out at most 0.42 of it (73 points), and level 2 at most 0.35 of its own anywhere.
-NEAR_SAFETY_GAPS = 10.0
-NEAR_ESTIMATE_SAFETY = (10.0, 10.0, 1.0, 1.0, 1.0)
+#: Levels below this estimate their error from the next level up (``estimate_resolution``), the others from the partner
+#: one degree lower (``numeric.core.charts.partner``; level 4 has no level above, and level 3 none that a finer
+#: reference could check).
+FINER_ESTIMATE_BELOW = 3
+#: The error estimate of each level is its difference from ``estimate_resolution``'s solve times this factor. From the
+#: next level up, twice the difference: where that level's own error is at most half of this one's, the difference lies
+#: between half and 1.5 times this level's error, so the estimate between 1 and 3 times it. Measured against level 4
+#: (max of mu and P*, above the rounding floor) over 72 (nu, c), nu from -1/2 to 0.4, 1 - c from 1.001 to 100 (1 - c_max)
+#: and c = 0.1, 0.5, 0.9: level 0 1.95 ... 2.02 times its true error, level 1 1.0 ... 1.98, level 2 1.0 ... 3.14 (the
+#: partner one degree lower had given level 2 1.0 ... 829 there, 829 at nu = 0.3 next to c_max, where its plain degree
+#: 10 converges poorly and level 2's own error happens to be small; and level 0 up to 6.4 times short of its error).
+ESTIMATE_SAFETY = (2.0, 2.0, 2.0, 1.0, 1.0)
 
 
-def estimate_safety(level: int, gap: float, gamma: float) -> float:
-    """The factor on the partner difference at this level and 1 - c (``ESTIMATE_SAFETY``, ``NEAR_ESTIMATE_SAFETY``)."""
-    if gamma > 0.0 and gap < NEAR_SAFETY_GAPS * float(largest_stick_radius_gap(gamma)):
-        return NEAR_ESTIMATE_SAFETY[level]
+def estimate_resolution(level: int) -> Resolution:
+    """The resolution whose solve gives the level's error estimate: the next level up below ``FINER_ESTIMATE_BELOW``,
+    else the partner one degree lower."""
+    return RESOLUTIONS[level + 1] if level < FINER_ESTIMATE_BELOW else partner(RESOLUTIONS[level])
+
+
+def estimate_safety(level: int) -> float:
+    """The factor on the difference from ``estimate_resolution``'s solve at this level (``ESTIMATE_SAFETY``)."""
     return ESTIMATE_SAFETY[level]
+
+
 #: Typical relative accuracy of each level (the worst measured, ``RESOLUTIONS``); rtol picks the first that meets it.
 LEVEL_TYPICAL_ERROR = {0: 1e-7, 1: 1e-9, 2: 1e-11, 3: 1e-12, 4: 1e-13}
-#: Rough run time in seconds of a solve with its error estimate (derivations/benchmark.md), for ordering routes.
-LEVEL_SECONDS = {0: 0.008, 1: 0.010, 2: 0.016, 3: 0.025, 4: 0.04}
+#: Rough run time in seconds of a solve with its error estimate (derivations/benchmark.md: a solve and, below
+#: ``FINER_ESTIMATE_BELOW``, one at the next level up), for ordering routes.
+LEVEL_SECONDS = {0: 0.009, 1: 0.013, 2: 0.021, 3: 0.025, 4: 0.04}
 
 
 def from_field(nu: float | None, field: SingularField, level: int, error: float | DeferredError,
                mu: float | None = None) -> FlatPunchSolution:
-    """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu); ``error`` is
-    the partner difference, times the level's ``estimate_safety``."""
-    factor = estimate_safety(level, field.gap, field.gamma)
+    """The solver's solution as a ``FlatPunchSolution`` (``mu``: the friction asked for, given mu) with its error
+    estimate (the level's ``estimate_safety`` times the difference from ``estimate_resolution``'s solve, at least the
+    rounding floor)."""
     if mu is not None:  # solved at theta = atan(mu gamma): cos(theta) from mu itself (``SingularField.with_friction``)
         field = field.with_friction(mu)
-    if factor != 1.0:
-        error = factor * error if isinstance(error, float) else DeferredError(lambda e=error: factor * e.value())
     return FlatPunchSolution(
         nu=nu,
         gamma=field.gamma,
@@ -170,10 +175,12 @@ def rounding_floor(scale: float) -> float:
     return ERROR_FLOOR * scale
 
 
-def _error(fine: SingularField, coarse: SingularField, value: Callable[[SingularField], float]) -> float:
+def _error(fine: SingularField, other: SingularField, value: Callable[[SingularField], float], level: int) -> float:
+    """The level's error estimate from ``estimate_resolution``'s solve ``other``: ``estimate_safety`` times the larger
+    difference of ``value`` and P*, at least the rounding floor."""
     scale = max(abs(value(fine)), abs(fine.compliance))
-    return max(abs(value(fine) - value(coarse)), abs(fine.compliance - coarse.compliance),
-               rounding_floor(scale))
+    difference = max(abs(value(fine) - value(other)), abs(fine.compliance - other.compliance))
+    return max(estimate_safety(level) * difference, rounding_floor(scale))
 
 
 def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: float | None = None,
@@ -211,8 +218,8 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: flo
         fine = SingularField(core_given_c(c, gap, gamma, _theta_near_c_max(gap, gamma, res), res))
 
     def estimate() -> float:
-        coarse = SingularField(core_given_c(c, gap, gamma, fine.theta, partner(res)))
-        error = _error(fine, coarse, lambda f: f.mu)
+        other = SingularField(core_given_c(c, gap, gamma, fine.theta, estimate_resolution(level)))
+        error = _error(fine, other, lambda f: f.mu, level)
         if bias > 0.0:  # the level's c_max off the closed form by bias: mu off by up to mu bias / (excess - bias)
             error = max(error, fine.mu * bias / (excess - bias))
         return error
@@ -242,10 +249,12 @@ def solve_limit(nu: float | None, gamma: float, level: int) -> tuple[FlatPunchSo
     res = RESOLUTIONS[level]
     start = math.log1p(-gap_max) - math.log(gap_max)
     fine = SingularField(solve_given_theta(HALF_PI, gamma, start, res))
-    coarse = SingularField(solve_given_theta(HALF_PI, gamma, math.log(fine.c) - math.log(fine.gap), partner(res)))
-    error = max(abs(fine.gap - coarse.gap), abs(fine.compliance - coarse.compliance), ERROR_FLOOR * fine.compliance)
+    other = SingularField(solve_given_theta(HALF_PI, gamma, math.log(fine.c) - math.log(fine.gap),
+                                            estimate_resolution(level)))
+    error = max(estimate_safety(level) * max(abs(fine.gap - other.gap), abs(fine.compliance - other.compliance)),
+                ERROR_FLOOR * fine.compliance)
     sol = from_field(nu, fine, level, error, math.inf)
-    return replace(sol, route=f"limit mu -> inf (annulus without pressure), {sol.route}"), coarse.gap
+    return replace(sol, route=f"limit mu -> inf (annulus without pressure), {sol.route}"), other.gap
 
 
 def _theta_near_c_max(gap: float, gamma: float, res: Resolution, tol: float = 1e-6) -> float:
@@ -292,22 +301,22 @@ def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found:
         compliance_slope = abs(float(found.compliance_slope[0]))
 
         def estimate() -> float:
-            coarse = SingularField(core_given_c(fine.c, fine.gap, gamma, fine.theta, partner(res)))
-            # the partner's logit c for this theta, less ours, and the step in logit c the iteration did not take
-            shift = abs(guided.solution.theta - coarse.theta) / abs(guided.slope) + guided.remaining_step
+            other = SingularField(core_given_c(fine.c, fine.gap, gamma, fine.theta, estimate_resolution(level)))
+            # the other resolution's logit c for this theta, less ours, and the step in logit c the iteration did not take
+            shift = abs(guided.solution.theta - other.theta) / abs(guided.slope) + guided.remaining_step
             scale = max(fine.c, fine.compliance)
-            return max(fine.c * fine.gap * shift, abs(fine.compliance - coarse.compliance) + compliance_slope * shift,
-                       rounding_floor(scale))
+            difference = max(fine.c * fine.gap * shift, abs(fine.compliance - other.compliance) + compliance_slope * shift)
+            return max(estimate_safety(level) * difference, rounding_floor(scale))
 
         return from_field(nu, fine, level, DeferredError(estimate), mu)
     start, step = _logit_guess(mu, gamma, found)
     fine = SingularField(solve_given_theta(theta, gamma, start, res, step=step))
 
     def estimate_secant() -> float:
-        # the partner's c differs from the fine one's by the discretisation error (< 1e-6)
-        coarse = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap),
-                                                 partner(res), step=TABLE_STEP))
-        return _error(fine, coarse, lambda f: f.c)
+        # the other resolution's c differs from the fine one's by the discretisation error (< 1e-6)
+        other = SingularField(solve_given_theta(theta, gamma, math.log(fine.c) - math.log(fine.layout.gap),
+                                                estimate_resolution(level), step=TABLE_STEP))
+        return _error(fine, other, lambda f: f.c, level)
 
     return from_field(nu, fine, level, DeferredError(estimate_secant), mu)
 

@@ -100,7 +100,7 @@ class FlatPunchSolution:
         P* = (pi/2) int_0^1 x p dx (2.4); the load is P = 4 G a P* delta / (1 - nu).
     error : float
         Estimated absolute error of c, mu and compliance (0 for closed forms); on the solver route it is
-        formed when first read (a second solve one degree lower, ``DeferredError``).
+        formed when first read (a second solve, at the next level up for levels 0-2, ``DeferredError``).
     route : str
         "closed form (...)" or "solver level L, n unknowns".
     breakpoints : ndarray

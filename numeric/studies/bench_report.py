@@ -118,7 +118,7 @@ def _side_by_side(bench: Benchmark) -> list[str]:
              "every case of every task; its time is the median of all those runs, as the load of a shared machine "
              "drifts), the "
              "error the worst relative error of mu or 1 - c and of P* over the points. The solver's error estimate "
-             "(a second solve one degree lower) is formed when first read: the rows 'with its error estimate' read "
+             "(a second solve, at the next level up: level 3) is formed when first read: the rows 'with its error estimate' read "
              "it, the others do not. Before each timed call the solver's cache of Abel integrals (kept per stick "
              "radius and level, for sweeps over nu) is cleared, so that every call is a problem not solved before, "
              "as the scheme's collocation matrix is cleared for it.", "",

@@ -260,8 +260,8 @@ def test_level_one_estimate_bounds_its_error_next_to_c_max(nu, c):
 def test_default_estimate_is_within_tenfold_next_to_c_max(nu, excess):
     # 1 - c = excess (1 - c_max). The partner one degree lower made the default level's estimate up to 829 times its
     # true error at nu = 0.3 (its plain degree 10 converges poorly there, and level 2's own error happens to be small);
-    # twice the difference from level 3 is measured 2.3, 1.98, 2.0 and 2.0 times the distance from level 4 (or the
-    # rounding floor) at these points, 1.0 ... 3.14 over 72 (nu, c) (``solver.ESTIMATE_SAFETY``). Bound: at or above
+    # twice the difference from level 3 is measured 2.21, 1.98, 2.02 and 2.02 times the distance from level 4 (or
+    # the rounding floor) at these points, 1.0 ... 3.14 over 72 (nu, c) (``solver.ESTIMATE_SAFETY``). Bound: at or above
     # the distance, within ten times it or the floor.
     gap_max = float(largest_stick_radius_gap(_gamma(nu)))
     c = 1.0 - excess * gap_max

@@ -175,7 +175,7 @@ class PlaneField:
             out[cols] = np.linalg.solve(B[mine, cols], strain[mine])
         return out
 
-    def _edge_singular_strain(self, pts: PointSet) -> np.ndarray:
+    def _edge_singular_strain(self, pts: PointSet, legendre: np.ndarray) -> np.ndarray:
         """The part of the strain on the edge element that is not a polynomial in its chart s (points on it).
 
         On the edge element q = s^lam Q(s), lam = alpha - 1/2, Q a polynomial (the element's coefficients), and
@@ -184,14 +184,14 @@ class PlaneField:
         -sigma cot(pi lam) y^lam Q(y) (sigma the chart's orientation) beside an analytic part. With
         y^lam = 1 + lam h_lam(y) the polynomial -sigma cot(pi lam) Q goes to the analytic part, and what is left,
         -sigma lam cot(pi lam) h_lam(y) Q(y), stays finite as lam -> 0 (mu -> inf: log y Q / pi). With -gamma p
-        (s^lam times a polynomial) it is this part."""
+        (s^lam times a polynomial) it is this part. ``legendre``: ``legendre01`` of the layout's degree at the points."""
         lay, e = self.layout, self._edge
         lam = self.alpha - 0.5
         lam_cot = 1.0 / math.pi if lam == 0.0 else lam / math.tan(math.pi * lam)
         cols = slice(int(self._starts[e]), int(self._starts[e + 1]))
-        Q = legendre01(lay.degree, pts.s) @ self._q[cols]
         with np.errstate(divide="ignore", invalid="ignore"):  # at x = 1 itself (the caller's)
-            return -lay.sigma[e] * lam_cot * h_beta(lam, pts.s) * Q - self.gamma * (self._basis_at(pts) @ self._p)
+            p = family_values(element_families(lay, e, self.alpha)[0], pts.s, legendre) @ self._p[cols]
+            return -lay.sigma[e] * lam_cot * h_beta(lam, pts.s) * (legendre @ self._q[cols]) - self.gamma * p
 
     @cached_property
     def _edge(self) -> int:
@@ -209,13 +209,15 @@ class PlaneField:
         points, strain = self._strain_at_slip_points
         mine = np.flatnonzero(points.owner == self._edge)
         edge = _subset(points, mine)
-        return np.linalg.solve(legendre01(self.layout.degree, edge.s), strain[mine] - self._edge_singular_strain(edge))
+        legendre = legendre01(self.layout.degree, edge.s)
+        return np.linalg.solve(legendre, strain[mine] - self._edge_singular_strain(edge, legendre))
 
     def strain(self, t: np.ndarray, offset_from_one: np.ndarray | None = None) -> np.ndarray:
         """du/dx = H q - gamma p at points c < t < 1 of the slip zone; ``offset_from_one``: t - 1 exactly, if known.
 
         Interpolated at the slip elements' collocation points: before the edge element in their bases
-        (``_strain_coefficients``), on it as its non-polynomial part and a polynomial (``_edge_strain_coefficients``)."""
+        (``_strain_coefficients``), on it as its non-polynomial part and a polynomial
+        (``_edge_strain_coefficients``)."""
         t = np.asarray(t, dtype=float).ravel()
         lay = self.layout
         pts = locate(lay, t, offset_from_one=offset_from_one)
@@ -226,8 +228,8 @@ class PlaneField:
             out[~edge] = self._basis_at(inner) @ self._strain_coefficients
         if np.any(edge):
             on_edge = _subset(pts, edge)
-            out[edge] = (self._edge_singular_strain(on_edge)
-                         + legendre01(lay.degree, on_edge.s) @ self._edge_strain_coefficients)
+            legendre = legendre01(lay.degree, on_edge.s)
+            out[edge] = self._edge_singular_strain(on_edge, legendre) + legendre @ self._edge_strain_coefficients
         return out
 
     def transformed_strain(self, pts: PointSet) -> np.ndarray:

@@ -167,6 +167,10 @@ class PlaneOperators:
             raise ValueError("the slip elements' points are not one block")
         return slice(int(rows[0]), int(rows[-1]) + 1)
 
+    def _chart_points(self, elements: list[int] | tuple[int, ...]) -> np.ndarray:
+        """Every point and its mirror in the chart of each element, element after element (2 N values each)."""
+        return np.concatenate([np.concatenate([self._y[:, e], self._y_mirror[:, e]]) for e in elements])
+
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
 
@@ -179,16 +183,13 @@ class PlaneOperators:
         N = pts.size
         # the singular elements that carry one family (the stick and slip ends share h_beta) in one call of the
         # transforms on all their points and mirrors: its cost is mostly per call, not per point
-        groups: dict[tuple, list[int]] = {}
+        groups: dict[Family, list[int]] = {}
         for e in self._singular:
-            fam = element_families(lay, int(e), alpha)[-1]
-            groups.setdefault((fam.kind, fam.parameter, fam.degree), []).append(int(e))
-        for elements in groups.values():
-            fam = element_families(lay, elements[0], alpha)[-1]
+            groups.setdefault(element_families(lay, int(e), alpha)[-1], []).append(int(e))
+        for fam, elements in groups.items():
             key = tuple(elements)
             if key not in self._geometry:
-                both = np.concatenate([np.concatenate([self._y[:, e], self._y_mirror[:, e]]) for e in elements])
-                self._geometry[key] = cauchy_geometry(fam.kind, fam.degree, both)
+                self._geometry[key] = cauchy_geometry(fam.kind, fam.degree, self._chart_points(elements))
             I_all = family_cauchy(fam, self._geometry[key].y, self._geometry[key])
             moments = family_integrals(fam)
             for i, e in enumerate(elements):
@@ -208,7 +209,7 @@ class PlaneOperators:
             return Transforms(even, odd, values, integrals, None, None, length)
         beta = max(0.5 - alpha, MODE_BETA_MIN)
         ends = (lay.stick_end, lay.stick_end + 1)
-        I_all = mode_cauchy(beta, np.concatenate([np.concatenate([self._y[:, e], self._y_mirror[:, e]]) for e in ends]))
+        I_all = mode_cauchy(beta, self._chart_points(ends))
         parts = []
         for i, e in enumerate(ends):
             I = I_all[2 * N * i: 2 * N * (i + 1)]

@@ -542,8 +542,8 @@ def side_by_side(config: Config) -> list[SideBySide]:
     clear = scheme.collocation_matrix.cache_clear
     ref_mid = flat_punch(nu=0.25, c=0.5, level=4)
     sch = scheme.solve_friction(0.5, 0.25, h=SIDE_H, tol=scheme_tolerance(SIDE_H))
-    yardstick = Yardstick(lambda: scheme.solve_friction(0.5, 0.25, h=SIDE_H, tol=scheme_tolerance(SIDE_H)), before=clear,
-                          budget=budget, max_runs=runs)
+    yardstick = Yardstick(lambda: scheme.solve_friction(0.5, 0.25, h=SIDE_H, tol=scheme_tolerance(SIDE_H)),
+                          before=clear, budget=budget, max_runs=runs)
     measured: list[tuple[str, float, float, int, str]] = []  # task, seconds, error, points, reference
 
     def full(s) -> tuple:  # what "the full solution" returns: mu or c, P*, p, q, u at a few points
@@ -594,10 +594,8 @@ def side_by_side(config: Config) -> list[SideBySide]:
     err = max(abs(c / flat_punch(nu=n, mu=m).c - 1) for m, n, c in check)
     measured.append((f"stick_radius of {BATCH} random (mu, nu), mu in [0.05, 2], nu in [-0.5, 0.49] (one call)",
                      t_batch, err, 40, "level 2 at 40 of the points"))
-    t_scheme = yardstick.seconds
-    return [SideBySide("paper's scheme, h = 0.01, nu = 0.25, c = 0.5 (mu, P*)", t_scheme, 1.0,
-                       max(abs(sch.mu / ref_mid.mu - 1), abs(sch.compliance / ref_mid.compliance - 1)), 1, "level 4")] + [
-        SideBySide(label, t, t / t_scheme, error, points, reference_) for label, t, error, points, reference_ in measured]
+    scheme_error = max(abs(sch.mu / ref_mid.mu - 1), abs(sch.compliance / ref_mid.compliance - 1))
+    return yardstick.rows(("paper's scheme, h = 0.01, nu = 0.25, c = 0.5 (mu, P*)", scheme_error, 1, "level 4"), measured)
 
 
 # ------------------------------------------------------------------------------ headline

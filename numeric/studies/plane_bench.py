@@ -123,6 +123,4 @@ def plane_side_by_side(budget: float, max_runs: int) -> list[SideBySide]:
     reference = "the solver's iteration at c itself (level 3)"
     task("plane law route, c = 1e-6, first call per nu (the fit)", laws, reference, lambda s: (s.mu,), law_fit.cache_clear)
     task("plane law route, c = 1e-6, later calls", laws, reference, lambda s: (s.mu,), lambda: None)
-    t_scheme = yardstick.seconds
-    return [SideBySide(SCHEME_TASK, t_scheme, 1.0, abs(scheme.mu / reference_mu(0.25, 0.5) - 1), 1, REFERENCE)] + [
-        SideBySide(label, t, t / t_scheme, error, points, reference_) for label, t, error, points, reference_ in measured]
+    return yardstick.rows((SCHEME_TASK, abs(scheme.mu / reference_mu(0.25, 0.5) - 1), 1, REFERENCE), measured)

@@ -86,10 +86,20 @@ class Yardstick:
             self.run()
         return statistics.median(self._times)
 
-    def case(self, call: Callable[[], object], *, before: Callable[[], object] | None = None, warm: bool = False) -> float:
+    def case(self, call: Callable[[], object], *, before: Callable[[], object] | None = None,
+             warm: bool = False) -> float:
         """``median_time`` of one case of a task, with the same budget and runs, after timing the yardstick again."""
         self.run()
         return median_time(call, before=before, budget=self.budget, max_runs=self.max_runs, warm=warm)
+
+    def rows(self, own: tuple[str, float, int, str],
+             tasks: Sequence[tuple[str, float, float, int, str]]) -> list[SideBySide]:
+        """The yardstick's own row (task, error, points, reference) and the tasks' (task, seconds, error, points,
+        reference), each with its ratio to ``seconds``."""
+        t = self.seconds
+        task, error, points, reference = own
+        return [SideBySide(task, t, 1.0, error, points, reference)] + [
+            SideBySide(name, seconds, seconds / t, err, n, ref) for name, seconds, err, n, ref in tasks]
 
 
 def clear_caches() -> tuple[str, ...]:

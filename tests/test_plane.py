@@ -420,6 +420,45 @@ def test_the_linearised_iteration_agrees_with_the_careful_one(nu, c):
         assert np.max(np.abs(a - b)[at_c] / scale[at_c]) <= 1e-7, (nu, c)
 
 
+@pytest.mark.parametrize("nu, c", [(-0.5, 0.93), (0.0, 0.99)])
+def test_the_rate_in_alpha_is_the_quotient_of_two_whole_assemblies(nu, c):
+    # the linearised system's second assembly forms only the columns that depend on alpha (h_beta at c, the edge
+    # element, the generic mode): against the difference quotient of two whole assemblies, where both have the same pins
+    # and no balance (alpha >= BALANCE_ALPHA_MAX, the reflection being chosen per assembly below it), the quotient is 0
+    # to the last bit in every other column (the same operations on the same numbers: what the restriction rests on),
+    # and in those columns it is the rate to the quotient's own rounding: a few eps of the terms that make each entry
+    # (|stick|, cos|normal| + sin|shear|, |mode| of both assemblies) over the step; 4 eps, the rate and the quotient
+    # rounding their sums in a different order
+    from dataclasses import replace
+    from numeric.core.plane_eigenvalue import plane_operators_at
+    from numeric.core.plane_operators import BALANCE_ALPHA_MAX, linearised_system, plane_collocation_system
+    from numeric.solutions.plane_solver import PLANE_LEVELS
+    g = (1 - 2 * nu) / (2 - 2 * nu)
+    theta = math.atan(plane.flat_punch(nu=nu, c=c).mu * g)
+    alpha, step = theta / math.pi, 1e-7 * theta / math.pi
+    assert alpha >= BALANCE_ALPHA_MAX
+    ops = plane_operators_at(c, 1 - c, PLANE_LEVELS[2])
+    base, other = plane_collocation_system(ops, g, alpha), plane_collocation_system(ops, g, alpha + step)
+    assert base.pinned == other.pinned and base.balance is None and other.balance is None
+    quotient = (other.matrix(theta) - base.matrix(theta)) / step
+    linear = linearised_system(ops, g, alpha, step)
+    rate = np.zeros_like(quotient)
+    linear.rate.add_to_matrix(rate, theta, 1.0, base.n_stick)
+    varying = np.zeros(quotient.shape[1], dtype=bool)
+    varying[linear.rate.stick_columns] = True
+    varying[2 * base.n_stick + linear.rate.slip_columns] = True
+    assert 0 < np.count_nonzero(varying) < varying.size / 4
+    assert np.all(quotient[:, ~varying] == 0.0) and np.all(rate[:, ~varying] == 0.0)
+    def terms(s):
+        return replace(s, stick=np.abs(s.stick), normal=np.abs(s.normal), shear=np.abs(s.shear),
+                       mode_stick=np.abs(s.mode_stick)).matrix(theta)
+
+    bound = 4 * np.finfo(float).eps * (terms(base) + terms(other)) / step
+    assert np.all(np.abs(rate - quotient) <= bound)
+    assert np.max(np.abs(quotient)) > 1e3 * np.max(bound)  # the rate is resolved, not rounding
+    assert np.array_equal(linear.matrix(theta), base.matrix(theta))  # delta = 0 at theta = pi alpha
+
+
 @pytest.mark.parametrize("c", [0.01, 0.5])
 def test_the_error_estimate_covers_the_rounding_of_theta_as_nu_tends_to_a_half(c):
     # as nu -> 1/2 theta ~ gamma^2 K/K' is small, and on the plain system G's rounding, absolute in theta, dominated

@@ -105,17 +105,15 @@ def _evaluate(ops: PlaneOperators, gamma: float, theta: float, derivative: bool 
     alpha = theta/pi: dG = l' . z - y . (dD/dtheta + dD/dalpha / pi) z with D^T y = l, dD/dalpha by a difference
     quotient (the basis exponent moves the singular families; at fixed basis G's slope can have the wrong sign)."""
     alpha = theta / math.pi
-    system = plane_collocation_system(ops, gamma, alpha)
-    D = system.matrix(theta)
-    lu = EquilibratedLU(D)
+    linear = linearised_system(ops, gamma, alpha, ALPHA_STEP) if derivative else None
+    system = plane_collocation_system(ops, gamma, alpha) if linear is None else linear.base
+    lu = EquilibratedLU(system.matrix(theta))
     z = lu.solve_refined(system.rhs)
     l = system.functional(theta)
-    if not derivative:
+    if linear is None:
         return system, z, float(l @ z), math.nan
     y = lu.solve_transposed(l)
-    shifted = plane_collocation_system(ops, gamma, alpha + ALPHA_STEP, like=system)
-    dD = system.matrix_derivative(theta) + (shifted.matrix(theta) - D) / (math.pi * ALPHA_STEP)
-    dG = system.functional_derivative(theta) @ z - y @ (dD @ z)
+    dG = system.functional_derivative(theta) @ z - y @ linear.derivative_times(theta, z)  # at theta = pi alpha
     return system, z, float(l @ z), float(dG)
 
 

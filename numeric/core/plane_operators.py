@@ -72,7 +72,7 @@ singular values of their p block)."""
 
 __all__ = ["MODE_BETA_MIN", "BALANCE_ALPHA_MAX", "BALANCE_POINT", "NEAR_NULL_STEPS", "PlaneOperators", "Transforms",
            "Balance", "near_null_balance", "PlaneCollocationSystem", "plane_collocation_system", "normal_factor",
-           "LinearisedPlaneSystem", "linearised_system"]
+           "LinearisedPlaneSystem", "PlaneRate", "linearised_system"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -81,7 +81,8 @@ class Transforms:
     reflection, H of its odd reflection, its value (0 off its element), and int_0^1 of each function; and
     the same of the generic mode m = beta s^(beta - 1) on the stick end (``mode_stick``: even, odd, values)
     and on the slip end (``mode_slip``), with its integral over the slip end (``mode_integral``); the mode's parts are
-    None where they were not asked for (``PlaneOperators.transforms(alpha, modes=False)``)."""
+    None where they were not asked for (``PlaneOperators.transforms(alpha, modes=False)``). ``columns``: the basis
+    columns the arrays hold, where they hold only some (``PlaneOperators.varying_columns``); None: all of them."""
 
     even: np.ndarray
     odd: np.ndarray
@@ -90,6 +91,7 @@ class Transforms:
     mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_integral: float
+    columns: np.ndarray | None = None
 
 
 def _with_balance_point(lay: PlaneLayout, points: PointSet) -> PointSet:
@@ -174,13 +176,29 @@ class PlaneOperators:
     def columns(self, e: int) -> slice:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
 
-    def transforms(self, alpha: float, modes: bool = True) -> Transforms:
+    @cached_property
+    def varying_columns(self) -> np.ndarray:
+        """The basis columns that depend on the basis exponent (layout order): the h_beta families of the two ends at c
+        and the whole edge element; every other column is a Legendre family, the same at every alpha."""
+        return np.concatenate([np.arange(self._family_start(int(e)), int(self.starts[e + 1])) for e in self._singular])
+
+    def _family_start(self, e: int) -> int:
+        """The first column of singular element e's alpha-dependent family (after the ends' Legendre part)."""
+        return int(self.starts[e]) + (0 if self.layout.kind[e] == EDGE else self.layout.degree + 1)
+
+    def transforms(self, alpha: float, modes: bool = True, varying_only: bool = False) -> Transforms:
         """All transforms with the alpha-dependent families (h_beta at c, the edge weight) at exponent alpha; the generic
-        mode's only if ``modes`` (the fields leave the mode out)."""
+        mode's only if ``modes`` (the fields leave the mode out); only the columns that depend on alpha
+        (``varying_columns``) if ``varying_only`` (the second assembly of a difference quotient in alpha)."""
         lay, pts = self.layout, self.points
-        even, odd = self._fixed_even.copy(), self._fixed_odd.copy()
-        values, integrals = self._fixed_values.copy(), self.integrals_fixed.copy()
         N = pts.size
+        held = self.varying_columns if varying_only else None
+        if varying_only:
+            even, odd, values = np.zeros((N, held.size)), np.zeros((N, held.size)), np.zeros((N, held.size))
+            integrals = np.zeros(held.size)
+        else:
+            even, odd = self._fixed_even.copy(), self._fixed_odd.copy()
+            values, integrals = self._fixed_values.copy(), self.integrals_fixed.copy()
         # the singular elements that carry one family (the stick and slip ends share h_beta) in one call of the
         # transforms on all their points and mirrors: its cost is mostly per call, not per point
         groups: dict[Family, list[int]] = {}
@@ -194,7 +212,9 @@ class PlaneOperators:
             moments = family_integrals(fam)
             for i, e in enumerate(elements):
                 I = I_all[2 * N * i: 2 * N * (i + 1)]
-                col = int(self.starts[e]) + (0 if lay.kind[e] == EDGE else lay.degree + 1)
+                col = self._family_start(e)
+                if held is not None:  # its place among the held columns (each family's columns are consecutive there)
+                    col = int(np.searchsorted(held, col))
                 sig = lay.sigma[e] / math.pi
                 plus, minus = sig * I[:N], sig * I[N:]
                 cols = slice(col, col + fam.degree + 1)
@@ -206,7 +226,7 @@ class PlaneOperators:
                 integrals[cols] = lay.length[e] * moments
         length = float(lay.length[lay.stick_end + 1])
         if not modes:
-            return Transforms(even, odd, values, integrals, None, None, length)
+            return Transforms(even, odd, values, integrals, None, None, length, held)
         beta = max(0.5 - alpha, MODE_BETA_MIN)
         ends = (lay.stick_end, lay.stick_end + 1)
         I_all = mode_cauchy(beta, self._chart_points(ends))
@@ -219,7 +239,7 @@ class PlaneOperators:
             value = np.zeros(N)
             value[mine] = beta * pts.s[mine] ** (beta - 1.0)
             parts.append((plus - minus, plus + minus, value))
-        return Transforms(even, odd, values, integrals, parts[0], parts[1], length)
+        return Transforms(even, odd, values, integrals, parts[0], parts[1], length, held)
 
 
 #: Point-element pairs farther than this (in element lengths) from the element take Gauss-Legendre: the pole at
@@ -343,8 +363,7 @@ class PlaneCollocationSystem:
         return np.zeros(self.rhs.size)
 
 
-def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
-                             like: PlaneCollocationSystem | None = None) -> PlaneCollocationSystem:
+def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) -> PlaneCollocationSystem:
     """Assemble (N) at every collocation point, (T) at the stick points and (P), for basis exponent alpha.
 
     The generic mode (``asymptotics.derive.plane``: the local solution (c - x)^(-1/2 - alpha) has no p on the
@@ -353,8 +372,8 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
     at c for mu = inf).
 
     Nor has the admissible local solution (c - x)^(1/2 - alpha), or any with cot(pi lam) = mu gamma, p on the stick
-    side: from alpha = 0.04 on (``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``; ``like``, an assembly at a nearby
-    exponent, imposes its choice, so that the two assemblies of a difference quotient in alpha agree) p's coefficients
+    side: from alpha = 0.04 on (``numeric.core.stick_pressure_pins.PLANE_PIN_FROM``; the second assembly of a difference
+    quotient in alpha takes the first's choice, ``linearised_system``) p's coefficients
     of h_beta on the stick end are pinned to 0 in (N) rows at the stick end's points
     ``numeric.core.stick_pressure_pins.pinned_rows``, as in the axisymmetric system. Left free, they made a near-null
     vector concentrated at c: at nu = 0, c = 0.99 (mu = 3.5, degree 18) the equilibrated
@@ -364,8 +383,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
     nu = 0.45 (2.2e-10 against 4.8e-12 at c = 0.5); between 0.04 and 1/4 (free until this was measured) pinned p at
     x = c came from up to 2.9e-9 to 3.1e-10 of degree 28.
 
-    The system is balanced below ``BALANCE_ALPHA_MAX`` (``like`` imposes its choice and its reflection: the two
-    assemblies of a difference quotient agree). The rows count N (N) + (T) + (P), but the p block of (N) is square
+    The system is balanced below ``BALANCE_ALPHA_MAX``. The rows count N (N) + (T) + (P), but the p block of (N) is square
     and nearly singular (H p = 0 has the punch's own solution (1 - x^2)^(-1/2) in the continuum, fixed by (P)): its
     least singular value is ~2e-10 (equilibrated), its left singular vector u a combination of (N) rows that in the
     discrete system only constrains q, through gamma q. As gamma -> 0 that made a near-null vector of the whole system
@@ -386,15 +404,56 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
     lay = ops.layout
     N = ops.n_collocation
     T = ops.transforms(alpha)
-    owner = ops.points.owner[:N]
-    stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
-    sc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in stick_el])
-    lc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in slip_el])
+    sc, lc, stick_pts = _zone_columns(ops)
     ns, nl = sc.size, lc.size
-    stick_pts = np.flatnonzero(np.isin(owner, stick_el))
     n = N + stick_pts.size + 1
     if n != 2 * ns + nl + 1:
         raise ValueError(f"plane system is {n} x {2 * ns + nl + 1}, not square")
+    stick, normal, shear, mode_stick = _blocks(T, gamma, N, stick_pts, sc, lc)
+    rhs = np.zeros(n)
+    rhs[-1] = 1.0
+    pin = pins_stick_pressure(alpha, plane=True)
+    slots, pin_rows = _pins(ops, sc) if pin else (np.zeros(0, dtype=int), np.zeros(0, dtype=int))
+    if pin:
+        pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
+    if alpha < BALANCE_ALPHA_MAX:
+        rows = np.setdiff1d(np.arange(N), pin_rows)
+        p_columns = np.setdiff1d(np.arange(ns), slots)
+        p_block = np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1)
+        balance = near_null_balance(p_block, rows, N)
+    else:
+        balance = None
+    if balance is not None:
+        _balanced((stick, normal, shear, mode_stick), balance, T, gamma, N, sc, lc, slots)
+    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
+                                  T.odd[ops.slip_rows], balance)
+
+
+def _zone_columns(ops: PlaneOperators) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The basis columns of the stick zone and of the slip zone (layout order), and the stick elements' points."""
+    lay = ops.layout
+    stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
+    sc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in stick_el])
+    lc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in slip_el])
+    return sc, lc, np.flatnonzero(np.isin(ops.points.owner[: ops.n_collocation], stick_el))
+
+
+def _pins(ops: PlaneOperators, sc: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The pinned unknowns (p's h_beta columns on the stick end, as places among the stick columns ``sc``) and the (N)
+    rows that carry the pins (``plane_collocation_system``)."""
+    lay = ops.layout
+    e = lay.stick_end
+    slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))
+    own = np.flatnonzero(ops.points.owner[: ops.n_collocation] == e)  # the stick end's points, from c on
+    return slots, own[pinned_rows(own.size, slots.size)]
+
+
+def _blocks(T: Transforms, gamma: float, N: int, stick_pts: np.ndarray, sc: np.ndarray, lc: np.ndarray
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The stick, normal and shear blocks and the mode's stick column of (N), (T), (P) (``plane_collocation_system``)
+    for the basis columns sc (stick zone) and lc (slip zone) of T's arrays, before pins and balance."""
+    ns, nl = sc.size, lc.size
+    n = N + stick_pts.size + 1
     stick = np.zeros((n, 2 * ns))
     stick[:N, :ns] = T.even[:N, sc]                          # (N): H p (stick part)
     stick[:N, ns:] = gamma * T.values[:N, sc]                #      + gamma q at the stick points
@@ -416,53 +475,82 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float,
     mode_stick = np.zeros(n)
     mode_stick[:N] = gamma * value_s[:N]
     mode_stick[N:-1] = odd_s[stick_pts]
-    rhs = np.zeros(n)
-    rhs[-1] = 1.0
-    pin = pins_stick_pressure(alpha, plane=True) if like is None else like.pinned
-    slots = pin_rows = np.zeros(0, dtype=int)
-    if pin:
-        e = lay.stick_end
-        slots = np.flatnonzero((sc >= ops.starts[e] + lay.degree + 1) & (sc < ops.starts[e + 1]))  # p's h_beta columns
-        own = np.flatnonzero(owner == e)  # the stick end's points, from c on: their (N) rows carry the pins
-        pin_rows = own[pinned_rows(own.size, slots.size)]
-        pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
-    if like is not None:
-        balance = like.balance
-    elif alpha < BALANCE_ALPHA_MAX:
-        rows = np.setdiff1d(np.arange(N), pin_rows)
-        p_columns = np.setdiff1d(np.arange(ns), slots)
-        p_block = np.concatenate([stick[np.ix_(rows, p_columns)], normal[rows, :nl]], axis=1)
-        balance = near_null_balance(p_block, rows, N)
-    else:
-        balance = None
-    if balance is not None:
-        _reflect((stick, normal, shear, mode_stick), balance)  # rhs is 0 on the (N) rows
-        r = balance.row  # (T) at the balance point, the transforms' row N
-        stick[r, :ns] = -gamma * T.values[N, sc]
-        stick[r, ns:] = T.odd[N, sc]
-        stick[r, slots] = 0.0
-        normal[r] = 0.0
-        shear[r, :nl] = T.odd[N, lc] / gamma
-        shear[r, -1] = -odd_l[N]
-        mode_stick[r] = odd_s[N]
-    return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
-                                  T.odd[ops.slip_rows], balance)
+    return stick, normal, shear, mode_stick
 
 
-def _combined(base: PlaneCollocationSystem, rate: PlaneCollocationSystem, delta: float) -> PlaneCollocationSystem:
+def _balanced(blocks: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray], balance: Balance, T: Transforms,
+              gamma: float, N: int, sc: np.ndarray, lc: np.ndarray, slots: np.ndarray) -> None:
+    """Apply the balance to the blocks of ``_blocks`` in place: the reflection of the (N) rows (rhs is 0 there), then
+    (T) at the balance point (the transforms' row N) in the row it freed; sc, lc: T's columns of the blocks' unknowns,
+    ``slots``: the pinned places among sc."""
+    stick, normal, shear, mode_stick = blocks
+    _reflect(blocks, balance)
+    r, ns, nl = balance.row, sc.size, lc.size
+    stick[r, :ns] = -gamma * T.values[N, sc]
+    stick[r, ns:] = T.odd[N, sc]
+    stick[r, slots] = 0.0
+    normal[r] = 0.0
+    shear[r, :nl] = T.odd[N, lc] / gamma
+    shear[r, -1] = -T.mode_slip[1][N]
+    mode_stick[r] = T.mode_stick[1][N]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class PlaneRate:
+    """d/dalpha of a ``PlaneCollocationSystem``'s arrays (a difference quotient of two assemblies), held on the
+    columns that depend on alpha (``PlaneOperators.varying_columns``; in every other column the two assemblies are the
+    same to the last bit, so their quotient is 0 there): ``stick_columns`` their places in the stick block (p's, then
+    q's), ``slip_columns`` in the slip block (the generic mode's, the last, among them), ``basis_columns`` the basis
+    columns themselves (of ``integrals`` and ``slip_odd``)."""
+
+    stick_columns: np.ndarray
+    slip_columns: np.ndarray
+    basis_columns: np.ndarray
+    stick: np.ndarray
+    normal: np.ndarray
+    shear: np.ndarray
+    mode_stick: np.ndarray
+    integrals: np.ndarray
+    slip_odd: np.ndarray
+
+    def times(self, theta: float, z: np.ndarray, n_stick: int) -> np.ndarray:
+        """The rate's D(theta) z (``PlaneCollocationSystem.times``) for the unknowns z of a system of ``n_stick``
+        stick columns."""
+        slip = z[2 * n_stick + self.slip_columns]
+        return (self.stick @ z[self.stick_columns] + normal_factor(theta) * (self.normal @ slip)
+                + math.sin(theta) * (self.shear @ slip) + self.mode_stick * z[-1])
+
+    def derivative_times(self, theta: float, z: np.ndarray, n_stick: int) -> np.ndarray:
+        """The rate's (d D / d theta) z (``PlaneCollocationSystem.derivative_times``)."""
+        slip = z[2 * n_stick + self.slip_columns]
+        return -math.sin(theta) * (self.normal @ slip) + normal_factor(theta) * (self.shear @ slip)
+
+    def add_to_matrix(self, D: np.ndarray, theta: float, delta: float, n_stick: int) -> None:
+        """D += delta x the rate's D(theta) (``PlaneCollocationSystem.matrix``), in place."""
+        D[:, self.stick_columns] += delta * self.stick
+        D[:, 2 * n_stick + self.slip_columns] += delta * (normal_factor(theta) * self.normal + math.sin(theta) * self.shear)
+        D[:, -1] += delta * self.mode_stick
+
+
+def _combined(base: PlaneCollocationSystem, rate: PlaneRate, delta: float) -> PlaneCollocationSystem:
     """The system whose arrays are base's + delta x rate's (the basis exponent base.alpha + delta, to first order)."""
-    return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, base.stick + delta * rate.stick,
-                                  base.normal + delta * rate.normal, base.shear + delta * rate.shear,
+    stick, normal, shear = base.stick.copy(), base.normal.copy(), base.shear.copy()
+    integrals, slip_odd = base.integrals.copy(), base.slip_odd.copy()
+    stick[:, rate.stick_columns] += delta * rate.stick
+    normal[:, rate.slip_columns] += delta * rate.normal
+    shear[:, rate.slip_columns] += delta * rate.shear
+    integrals[rate.basis_columns] += delta * rate.integrals
+    slip_odd[:, rate.basis_columns] += delta * rate.slip_odd
+    return PlaneCollocationSystem(base.layout, base.gamma, base.alpha + delta, stick, normal, shear,
                                   base.mode_stick + delta * rate.mode_stick, base.rhs, base.stick_columns,
-                                  base.slip_columns, base.integrals + delta * rate.integrals, base.pinned,
-                                  base.slip_odd + delta * rate.slip_odd, base.balance)
+                                  base.slip_columns, integrals, base.pinned, slip_odd, base.balance)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
 class LinearisedPlaneSystem:
     """The plane system with its basis exponent following theta, alpha = theta / pi, to first order about alpha0:
     D(theta) = D(theta; alpha0) + (theta/pi - alpha0) dD/dalpha(theta), dD/dalpha a difference quotient of two
-    assemblies (``rate``: the difference of every array over the step in alpha).
+    assemblies (``rate``, on the columns that depend on alpha).
 
     The eigen functional G = a (the generic mode's amplitude) depends on the basis exponent nearly as strongly as on
     theta: at the root, dG/dalpha / pi = -1.005 dG/dtheta at nu = 0.3, c = 0.5 (measured), so Newton at a fixed basis
@@ -473,7 +561,7 @@ class LinearisedPlaneSystem:
     alpha = theta/pi as a ``PlaneCollocationSystem`` (its arrays to first order), for the fields."""
 
     base: PlaneCollocationSystem
-    rate: PlaneCollocationSystem
+    rate: PlaneRate
 
     @property
     def rhs(self) -> np.ndarray:
@@ -483,12 +571,19 @@ class LinearisedPlaneSystem:
         return _combined(self.base, self.rate, theta / math.pi - self.base.alpha)
 
     def matrix(self, theta: float) -> np.ndarray:
-        return self.at(theta).matrix(theta)
+        """D(theta) at alpha = theta/pi: the base's and delta x the rate's (``at(theta).matrix(theta)``, without the
+        combined arrays)."""
+        D = self.base.matrix(theta)
+        self.rate.add_to_matrix(D, theta, theta / math.pi - self.base.alpha, self.base.n_stick)
+        return D
 
     def derivative_times(self, theta: float, z: np.ndarray) -> np.ndarray:
         """d/dtheta [D(theta; alpha0 + delta) z], delta = theta/pi - alpha0: the theta-derivative at the combined arrays
         and the rate's D z / pi."""
-        return self.at(theta).derivative_times(theta, z) + self.rate.times(theta, z) / math.pi
+        base, rate, ns = self.base, self.rate, self.base.n_stick
+        delta = theta / math.pi - base.alpha
+        return (base.derivative_times(theta, z) + delta * rate.derivative_times(theta, z, ns)
+                + rate.times(theta, z, ns) / math.pi)
 
     def functional(self, theta: float) -> np.ndarray:
         return self.base.functional(theta)
@@ -498,12 +593,29 @@ class LinearisedPlaneSystem:
 
 
 def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: float) -> LinearisedPlaneSystem:
-    """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step."""
+    """``LinearisedPlaneSystem`` about alpha from assemblies at alpha and alpha + step, the second only of the columns
+    that depend on alpha (``PlaneOperators.varying_columns``), with the first's pins and balance."""
     base = plane_collocation_system(ops, gamma, alpha)
-    other = plane_collocation_system(ops, gamma, alpha + step, like=base)
-    rate = PlaneCollocationSystem(base.layout, gamma, step, (other.stick - base.stick) / step,
-                                  (other.normal - base.normal) / step, (other.shear - base.shear) / step,
-                                  (other.mode_stick - base.mode_stick) / step, np.zeros_like(base.rhs),
-                                  base.stick_columns, base.slip_columns, (other.integrals - base.integrals) / step,
-                                  base.pinned, (other.slip_odd - base.slip_odd) / step, base.balance)
+    N = ops.n_collocation
+    T = ops.transforms(alpha + step, varying_only=True)
+    held = T.columns
+    sc, lc = base.stick_columns, base.slip_columns
+    stick_pts = _zone_columns(ops)[2]
+    p_places, l_places = np.flatnonzero(np.isin(sc, held)), np.flatnonzero(np.isin(lc, held))
+    p_held, l_held = np.searchsorted(held, sc[p_places]), np.searchsorted(held, lc[l_places])  # their columns in T
+    stick, normal, shear, mode_stick = _blocks(T, gamma, N, stick_pts, p_held, l_held)
+    slots = np.zeros(0, dtype=int)
+    if base.pinned:  # the first's pins: the same unit rows and columns, so 0 in the quotient
+        slots, pin_rows = _pins(ops, sc)
+        slots = np.searchsorted(p_places, slots)  # the pinned unknowns are alpha-dependent (h_beta columns)
+        pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick))
+    if base.balance is not None:
+        _balanced((stick, normal, shear, mode_stick), base.balance, T, gamma, N, p_held, l_held, slots)
+    ns, nl = sc.size, lc.size
+    stick_columns = np.concatenate([p_places, ns + p_places])
+    slip_columns = np.append(l_places, nl)
+    rate = PlaneRate(stick_columns, slip_columns, held, (stick - base.stick[:, stick_columns]) / step,
+                     (normal - base.normal[:, slip_columns]) / step, (shear - base.shear[:, slip_columns]) / step,
+                     (mode_stick - base.mode_stick) / step, (T.integrals - base.integrals[held]) / step,
+                     (T.odd[ops.slip_rows] - base.slip_odd[:, held]) / step)
     return LinearisedPlaneSystem(base, rate)

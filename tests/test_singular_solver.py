@@ -270,6 +270,52 @@ def test_default_estimate_is_within_tenfold_next_to_c_max(nu, excess):
     assert distance <= s.error <= 10.0 * max(distance, rounding_floor(max(s.mu, s.compliance)))
 
 
+def _fine_reference(nu: float, c: float, theta: float, degree: int) -> float:
+    """mu at stick radius c on level 4's layout rule at a higher degree (a convergence study's finer member)."""
+    from numeric.core.charts import EDGE_GRADING, Resolution
+    from numeric.core.eigenvalue import solve_given_c
+    from numeric.core.fields import SingularField
+    res = Resolution(degree=degree, singular_degree=3, edge_grading=EDGE_GRADING)
+    return SingularField(solve_given_c(c, 1.0 - c, _gamma(nu), theta, res)).mu
+
+
+@pytest.mark.parametrize("nu, level", [(0.35, 3), (0.35, 4), (0.0, 3), (0.0, 4)])
+def test_fine_estimates_are_not_below_their_error_next_to_c_max(nu, level):
+    # 1 - c = 1.001 (1 - c_max), mu gamma ~ 1.5e3: against degree 21 (level 4's layout rule, three degrees finer), with
+    # its distance from degree 23 as its own uncertainty. There level 3's partner one degree lower had given 5e-13
+    # against a true 6.9e-12 (nu = 0.35; 14 times short) and level 4's 1.1 ... 2.5 times short at nu = 0 ... 0.2. Now
+    # level 3 takes twice its difference from level 4, and both at least theta's rounding scatter (``THETA_FLOOR``):
+    # measured 3.9e-11 ... 4.7e-11 relative against true errors up to 8.6e-12 at this 1 - c over nu in {-1/2, 0, 0.1,
+    # 0.2, 0.25, 0.3, 0.35, 0.4}; over 79 (nu, c) from 1.001 to 100 (1 - c_max) and c = 0.1, 0.5, 0.9 never below, at
+    # levels 2, 3 and 4, and 1.0 ... 2.06 times the larger of the distance and the stated floor. Bound: not below the
+    # distance less the reference's uncertainty, within ten times the larger of the distance and the stated floor.
+    from numeric.solutions.solver import THETA_FLOOR
+    gap_max = float(largest_stick_radius_gap(_gamma(nu)))
+    c = 1.0 - 1.001 * gap_max
+    s = flat_punch(nu=nu, c=c, level=level)
+    theta = math.atan(s.mu * _gamma(nu))
+    ref, other = (_fine_reference(nu, c, theta, d) for d in (21, 23))
+    distance, spread = abs(s.mu - ref), abs(other - ref)
+    floor = max(rounding_floor(max(s.mu, s.compliance)), s.mu * THETA_FLOOR / (0.5 * math.sin(2.0 * theta)))
+    assert distance - spread <= s.error <= 10.0 * max(distance + spread, floor)
+
+
+def test_theta_floor_covers_the_scatter_of_theta_over_starts():
+    # the rounding scatter of a given-c solve's theta over 12 starts (the route's guess and 1e-12 ... 1e-6 relative off
+    # it) where it was largest at levels 2-4 (nu = 0.35, 1 - c = 1.003 (1 - c_max), level 3: 1.3e-14 measured; over
+    # levels 0-4, six nu and six c near c_max at most 2.5e-14 at levels 1-4, 3.6e-13 at level 0, whose difference from
+    # level 1 is far larger). Bound: THETA_FLOOR itself (3e-14, which the estimate takes as theta's rounding).
+    from numeric.core.charts import RESOLUTIONS
+    from numeric.core.eigenvalue import solve_given_c
+    from numeric.solutions.solver import THETA_FLOOR
+    g = _gamma(0.35)
+    c = 1.0 - 1.003 * float(largest_stick_radius_gap(g))
+    guess = math.atan(flat_punch(nu=0.35, c=c, level=3).mu * g)
+    thetas = [solve_given_c(c, 1.0 - c, g, guess * (1.0 + d), RESOLUTIONS[3]).theta
+              for d in (0.0, 1e-12, -1e-12, 1e-10, -1e-10, 1e-9, -1e-9, 1e-8, -1e-8, 1e-7, -1e-7, 1e-6)]
+    assert 0.0 < max(thetas) - min(thetas) <= THETA_FLOOR
+
+
 @pytest.mark.parametrize("level", [0, 1])
 def test_coarse_estimates_given_mu_are_within_tenfold_next_to_c_max(level):
     # given mu, nu = 0.3, 1 - c = 1.1 (1 - c_max): from the partner one degree lower levels 0 and 1 had estimates 1340

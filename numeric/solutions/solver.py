@@ -1,16 +1,18 @@
 """The solver route of ``numeric.flat_punch``: the singular-basis solver of ``numeric.core`` at its levels.
 
 Each level is a ``numeric.core.charts.Resolution`` (``RESOLUTIONS``); ``error`` is twice the difference between
-the level and the same problem at the next level up (levels 0-2; levels 3 and 4: the difference from the partner one
+the level and the same problem at the next level up (levels 0-3; level 4: the difference from the partner one
 polynomial degree lower, ``numeric.core.charts.partner``; ``estimate_resolution``, ``ESTIMATE_SAFETY``), at least
 ``ERROR_FLOOR`` times the value (the rounding level of the eigenvalue condition, flat in c down to c = 1e-5 since the
-rows of (2.2a) are differenced and the solves refined, ``numeric.core.operators.collocation_system``) and, given c
-within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the level's c_max (``NEAR_C_MAX``; within rounding
-of c_max the answer is the slip limit, mu = inf). Where the next level's error is at most half the level's, the
-estimate lies between 1 and 3 times the true error. Measured against level 4 over 72 (nu, c) (``ESTIMATE_SAFETY``:
-1 - c from 1.001 to 100 (1 - c_max), nu from -1/2 to 0.4, and c = 0.1, 0.5, 0.9): the default level's estimate
-1.0 ... 3.14 times its true error (or the rounding floor), never below it; the partner one degree lower had been up
-to 829 times pessimistic there. The estimate is a second solve, somewhat costlier than the first, so it is formed
+rows of (2.2a) are differenced and the solves refined, ``numeric.core.operators.collocation_system``), given c at
+least theta's rounding scatter in mu (``THETA_FLOOR``: next to c_max, where mu gamma = tan theta is large, it
+decides) and, given c within 1e-6 (1 - c_max) of c_max, at least the shift of mu from the level's c_max
+(``NEAR_C_MAX``; within rounding of c_max the answer is the slip limit, mu = inf). Where the next level's error is
+at most half the level's, the estimate lies between 1 and 3 times the true error. Measured against level 4 over 72
+(nu, c) (``ESTIMATE_SAFETY``: 1 - c from 1.001 to 100 (1 - c_max), nu from -1/2 to 0.4, and c = 0.1, 0.5, 0.9): the
+default level's estimate 1.0 ... 3.14 times its true error (or the rounding floor), never below it; the partner one
+degree lower had been up to 829 times pessimistic there. Levels 2, 3 and 4 against degree 21 over 79 such (nu, c):
+never below, 1.0 ... 2.06 times the larger of the true error and the stated floor. The estimate is a second solve, somewhat costlier than the first, so it is formed
 when first read (``numeric.solutions.solution.DeferredError``), or at once where rtol asks for it.
 
 Given c: Newton in theta = atan(mu gamma) from a guess (the Chebyshev table, else the
@@ -54,7 +56,7 @@ from numeric.solutions.limits import ADHESIVE_EDGE_BREAKPOINTS, ClosedForm, clos
 from numeric.solutions.solution import DeferredError, FlatPunchSolution, Offer, warn_unmet
 
 __all__ = ["DEFAULT_LEVEL", "C_ASYMPTOTIC", "GAP_ADHESIVE", "LAW_MU_GAMMA_MAX", "ERROR_FLOOR", "LEVEL_TYPICAL_ERROR", "LEVEL_SECONDS",
-           "ESTIMATE_SAFETY", "FINER_ESTIMATE_BELOW", "estimate_resolution", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
+           "ESTIMATE_SAFETY", "FINER_ESTIMATE_BELOW", "THETA_FLOOR", "estimate_resolution", "estimate_safety", "NEAR_C_MAX", "ROUNDING_ULPS", "rounding_floor", "SolverRoute", "solve_given_c", "solve_given_mu", "solve_limit", "from_field",
            "nearly_adhesive"]
 
 DEFAULT_LEVEL = 2
@@ -75,10 +77,11 @@ NEAR_C_MAX = 1e-6
 #: c within this many units in the last place of c_max (or within twice the distance of the level's c_max from
 #: the closed form, if larger) is c_max to rounding: the answer is the slip limit, mu = inf.
 ROUNDING_ULPS = 4.0
-#: Levels below this estimate their error from the next level up (``estimate_resolution``), the others from the partner
-#: one degree lower (``numeric.core.charts.partner``; level 4 has no level above, and level 3 none that a finer
-#: reference could check).
-FINER_ESTIMATE_BELOW = 3
+#: Levels below this estimate their error from the next level up (``estimate_resolution``), level 4 (none above it)
+#: from the partner one degree lower (``numeric.core.charts.partner``). Level 3 did so too until it was checked
+#: against degree 21 (level 4's layout rule): next to c_max its partner's difference fell below its error (1 - c =
+#: 1.001 (1 - c_max), nu = 0.35: 5e-13 against 6.9e-12 in mu, the reference's own spread to degree 23 3.4e-13).
+FINER_ESTIMATE_BELOW = 4
 #: The error estimate of each level is its difference from ``estimate_resolution``'s solve times this factor. From the
 #: next level up, twice the difference: where that level's own error is at most half of this one's, the difference lies
 #: between half and 1.5 times this level's error, so the estimate between 1 and 3 times it. Measured against level 4
@@ -86,7 +89,14 @@ FINER_ESTIMATE_BELOW = 3
 #: and c = 0.1, 0.5, 0.9: level 0 1.95 ... 2.02 times its true error, level 1 1.0 ... 1.98, level 2 1.0 ... 3.14 (the
 #: partner one degree lower had given level 2 1.0 ... 829 there, 829 at nu = 0.3 next to c_max, where its plain degree
 #: 10 converges poorly and level 2's own error happens to be small; and level 0 up to 6.4 times short of its error).
-ESTIMATE_SAFETY = (2.0, 2.0, 2.0, 1.0, 1.0)
+ESTIMATE_SAFETY = (2.0, 2.0, 2.0, 2.0, 1.0)
+#: Absolute rounding scatter of a given-c solve's theta: mu's error is at least mu THETA_FLOOR / (sin(theta) cos(theta))
+#: (mu gamma = tan theta), which next to c_max (mu gamma ~ 1e3) is above ERROR_FLOOR. Measured: the spread of theta
+#: over 12 starts (the route's guess and 1e-12 ... 1e-6 relative off it) at levels 0-4, nu in {-1/2, 0, 0.2, 0.3,
+#: 0.35, 0.4}, 1 - c = 1.001, 1.003, 1.01, 1.1, 2, 10 (1 - c_max): at most 2.5e-14 at level 1, 7.3e-15, 1.3e-14 and
+#: 1.4e-14 at levels 2, 3, 4 (mu relative 1.5e-11 at nu = 0.35, 1.001 (1 - c_max), level 3); 3.6e-13 at level 0, whose
+#: difference from level 1 is far larger there.
+THETA_FLOOR = 3e-14
 
 
 def estimate_resolution(level: int) -> Resolution:
@@ -185,7 +195,7 @@ def _error(fine: SingularField, other: SingularField, value: Callable[[SingularF
 
 def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: float | None = None,
                   theta_guess: float | None = None) -> FlatPunchSolution:
-    """mu for stick radius c at ``level``; the partner resolution gives the error estimate. ``gap``: 1 - c
+    """mu for stick radius c at ``level``; ``estimate_resolution``'s solve gives the error estimate. ``gap``: 1 - c
     exactly, where c near 1 has rounded it (the tables' nodes); ``theta_guess``: atan(mu gamma) from a
     neighbouring solution (else the table's, or the law's)."""
     given_gap = gap
@@ -219,7 +229,7 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: flo
 
     def estimate() -> float:
         other = SingularField(core_given_c(c, gap, gamma, fine.theta, estimate_resolution(level)))
-        error = _error(fine, other, lambda f: f.mu, level)
+        error = max(_error(fine, other, lambda f: f.mu, level), fine.mu * THETA_FLOOR / (0.5 * math.sin(2.0 * fine.theta)))
         if bias > 0.0:  # the level's c_max off the closed form by bias: mu off by up to mu bias / (excess - bias)
             error = max(error, fine.mu * bias / (excess - bias))
         return error
@@ -229,9 +239,9 @@ def solve_given_c(nu: float | None, c: float, gamma: float, level: int, gap: flo
 
 def solve_limit(nu: float | None, gamma: float, level: int) -> tuple[FlatPunchSolution, float]:
     """The limit mu -> inf (theta = pi/2: c = c_max, no pressure on the slip annulus) at ``level``, and the
-    partner resolution's 1 - c_max.
+    1 - c_max of ``estimate_resolution``'s solve.
 
-    ``error`` is the difference from the partner (c, P*), at least ERROR_FLOOR P*. Where 1 - c_max is below
+    ``error`` is the difference from that solve (c, P*, times ``estimate_safety``), at least ERROR_FLOOR P*. Where 1 - c_max is below
     GAP_ADHESIVE (nu above ~0.41, gamma below ~0.15) the annulus is thinner than the stresses resolve (and a
     layout down to it would need ~1e4 elements at nu = 0.4999, where 1 - c_max underflows: 1.3 GiB): the
     adhesive solution (App. B) with c = 1 - (1 - c_max) of the closed form, as ``nearly_adhesive``; at
@@ -287,9 +297,9 @@ def solve_given_mu(nu: float | None, mu: float, gamma: float, level: int, found:
     already read).
 
     Where the table reaches: one or two given-c solves (``numeric.core.eigenvalue.solve_given_theta_guided``) from its
-    c and d theta / d logit c; the error estimate is the partner resolution's theta at the same c, turned into
+    c and d theta / d logit c; the error estimate is ``estimate_resolution``'s theta at the same c, turned into
     c by that slope (and P* by the table's d P* / d logit c). Elsewhere: the secant in logit c at
-    theta = atan(mu gamma) from the law's guess, the partner likewise."""
+    theta = atan(mu gamma) from the law's guess, ``estimate_resolution``'s likewise."""
     theta = math.atan(mu * gamma)
     res: Resolution = RESOLUTIONS[level]
     if found is None:

@@ -81,8 +81,8 @@ class Transforms:
     reflection, H of its odd reflection, its value (0 off its element), and int_0^1 of each function; and
     the same of the generic mode m = beta s^(beta - 1) on the stick end (``mode_stick``: even, odd, values)
     and on the slip end (``mode_slip``), with its integral over the slip end (``mode_integral``); the mode's parts are
-    None where they were not asked for (``PlaneOperators.transforms(alpha, modes=False)``). ``columns``: the basis
-    columns the arrays hold, where they hold only some (``PlaneOperators.varying_columns``); None: all of them."""
+    None where they were not asked for (``PlaneOperators.transforms(alpha, modes=False)``). Its columns are every
+    basis function's, or with ``transforms(alpha, varying_only=True)`` those of ``PlaneOperators.varying_columns``."""
 
     even: np.ndarray
     odd: np.ndarray
@@ -91,7 +91,6 @@ class Transforms:
     mode_stick: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_slip: tuple[np.ndarray, np.ndarray, np.ndarray] | None
     mode_integral: float
-    columns: np.ndarray | None = None
 
 
 def _with_balance_point(lay: PlaneLayout, points: PointSet) -> PointSet:
@@ -177,6 +176,19 @@ class PlaneOperators:
         return slice(int(self.starts[e]), int(self.starts[e + 1]))
 
     @cached_property
+    def zone_columns(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The basis columns of the stick zone and of the slip zone (layout order), and the stick elements' collocation
+        points (read-only: every assembly of this layout takes them)."""
+        lay = self.layout
+        stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
+        sc = np.concatenate([np.arange(self.starts[e], self.starts[e + 1]) for e in stick_el])
+        lc = np.concatenate([np.arange(self.starts[e], self.starts[e + 1]) for e in slip_el])
+        out = (sc, lc, np.flatnonzero(np.isin(self.points.owner[: self.n_collocation], stick_el)))
+        for a in out:
+            a.setflags(write=False)
+        return out
+
+    @cached_property
     def varying_columns(self) -> np.ndarray:
         """The basis columns that depend on the basis exponent (layout order): the h_beta families of the two ends at c
         and the whole edge element; every other column is a Legendre family, the same at every alpha."""
@@ -226,7 +238,7 @@ class PlaneOperators:
                 integrals[cols] = lay.length[e] * moments
         length = float(lay.length[lay.stick_end + 1])
         if not modes:
-            return Transforms(even, odd, values, integrals, None, None, length, held)
+            return Transforms(even, odd, values, integrals, None, None, length)
         beta = max(0.5 - alpha, MODE_BETA_MIN)
         ends = (lay.stick_end, lay.stick_end + 1)
         I_all = mode_cauchy(beta, self._chart_points(ends))
@@ -239,7 +251,7 @@ class PlaneOperators:
             value = np.zeros(N)
             value[mine] = beta * pts.s[mine] ** (beta - 1.0)
             parts.append((plus - minus, plus + minus, value))
-        return Transforms(even, odd, values, integrals, parts[0], parts[1], length, held)
+        return Transforms(even, odd, values, integrals, parts[0], parts[1], length)
 
 
 #: Point-element pairs farther than this (in element lengths) from the element take Gauss-Legendre: the pole at
@@ -404,7 +416,7 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) ->
     lay = ops.layout
     N = ops.n_collocation
     T = ops.transforms(alpha)
-    sc, lc, stick_pts = _zone_columns(ops)
+    sc, lc, stick_pts = ops.zone_columns
     ns, nl = sc.size, lc.size
     n = N + stick_pts.size + 1
     if n != 2 * ns + nl + 1:
@@ -413,8 +425,9 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) ->
     rhs = np.zeros(n)
     rhs[-1] = 1.0
     pin = pins_stick_pressure(alpha, plane=True)
-    slots, pin_rows = _pins(ops, sc) if pin else (np.zeros(0, dtype=int), np.zeros(0, dtype=int))
+    slots = pin_rows = np.zeros(0, dtype=int)
     if pin:
+        slots, pin_rows = _pins(ops, sc)
         pin_to_zero(stick, slots, pin_rows, (normal, shear, mode_stick, rhs))
     if alpha < BALANCE_ALPHA_MAX:
         rows = np.setdiff1d(np.arange(N), pin_rows)
@@ -427,15 +440,6 @@ def plane_collocation_system(ops: PlaneOperators, gamma: float, alpha: float) ->
         _balanced((stick, normal, shear, mode_stick), balance, T, gamma, N, sc, lc, slots)
     return PlaneCollocationSystem(lay, gamma, alpha, stick, normal, shear, mode_stick, rhs, sc, lc, T.integrals, pin,
                                   T.odd[ops.slip_rows], balance)
-
-
-def _zone_columns(ops: PlaneOperators) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The basis columns of the stick zone and of the slip zone (layout order), and the stick elements' points."""
-    lay = ops.layout
-    stick_el, slip_el = lay.elements(STICK), lay.elements(SLIP)
-    sc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in stick_el])
-    lc = np.concatenate([np.arange(ops.starts[e], ops.starts[e + 1]) for e in slip_el])
-    return sc, lc, np.flatnonzero(np.isin(ops.points.owner[: ops.n_collocation], stick_el))
 
 
 def _pins(ops: PlaneOperators, sc: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -598,9 +602,8 @@ def linearised_system(ops: PlaneOperators, gamma: float, alpha: float, step: flo
     base = plane_collocation_system(ops, gamma, alpha)
     N = ops.n_collocation
     T = ops.transforms(alpha + step, varying_only=True)
-    held = T.columns
-    sc, lc = base.stick_columns, base.slip_columns
-    stick_pts = _zone_columns(ops)[2]
+    held = ops.varying_columns
+    sc, lc, stick_pts = ops.zone_columns
     p_places, l_places = np.flatnonzero(np.isin(sc, held)), np.flatnonzero(np.isin(lc, held))
     p_held, l_held = np.searchsorted(held, sc[p_places]), np.searchsorted(held, lc[l_places])  # their columns in T
     stick, normal, shear, mode_stick = _blocks(T, gamma, N, stick_pts, p_held, l_held)

@@ -201,9 +201,9 @@ def test_largest_stick_radius():
     # 2 % outside, no friction coefficient gives c (NoEigenvalueError). (flat_punch for given
     # mu = 1000 would be the other route, but it warns of an overflow in numeric/core/eigen.py.)
     from numeric import NoEigenvalueError
-    from numeric.studies.expansion_checks import _largest_stick
+    from numeric.studies.expansion_checks import largest_stick_rows
 
-    estimates = {e.gamma: e for e in _largest_stick(False)[1]}
+    estimates = {e.gamma: e for e in largest_stick_rows(False)[1]}
     gap = estimates[2.0 / 3.0].one_minus_c_max
     assert flat_punch(gamma=2.0 / 3.0, c=1.0 - 1.02 * gap).mu > 50.0
     with pytest.raises(NoEigenvalueError):

@@ -24,7 +24,7 @@ from .. import first_order as fp
 from ..adhesive import compliance_adhesive, shear_adhesive
 from ..derivation import Comparison, Derivation, Identity, Step, rounding_bound
 
-__all__ = ["derivations", "chi_first_order", "chi_first_order_mp", "phi_direct_mp", "abel_log_kernel_residual"]
+__all__ = ["derivations", "chi_first_order", "chi_first_order_mp", "phi_direct_mp", "abel_log_kernel_residual", "substitution_residual"]
 
 PART = "2.3"
 
@@ -530,7 +530,7 @@ def _d231() -> Derivation:
     )
 
 
-def _substitution_residual(c_: float, xs=(0.5,)) -> float:
+def substitution_residual(c_: float, xs=(0.5,)) -> float:
     """Largest |left - right| of (2.33) for gamma p^(1) = gamma^2 P1 (P1 = pressure_correction), q^(0)/mu = p^(0)(1 - psi).
 
     Left: int_x^1 t P1 dt/sqrt(t^2 - x^2) = int_0^sqrt(1-x^2) P1(sqrt(x^2 + v^2)) dv by SciPy quad
@@ -576,7 +576,7 @@ def _d233() -> Derivation:
     inverse_log = sp.factor(sp.expand(-2 / (sp.pi * x) * sp.diff(j_of_a.subs(a, 1 - x**2), x)))
     h_slope_stick = sp.diff(2 / sp.pi * sp.atanh(s) / sp.Symbol("f_0"), s)
     h_slope_slip = sp.diff(2 / sp.pi * s * K_prime(s), s)
-    residual = _substitution_residual(0.5)  # x = 0.5; the tests add more points
+    residual = substitution_residual(0.5)  # x = 0.5; the tests add more points
     identity = Identity(
         name="Abel inverse of log|sigma^2 - s^2|",
         statement=r"-\frac2{\pi x}\frac{d}{dx}\int_x^1\frac{s\log|\sigma^2-s^2|\,ds}{\sqrt{s^2-x^2}} = "

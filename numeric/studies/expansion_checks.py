@@ -67,6 +67,7 @@ __all__ = [
     "LargeMuRow",
     "LargestStickRow",
     "LargestStickEstimate",
+    "largest_stick_rows",
     "StickShearRow",
     "ComplianceRow",
     "AdhesiveComplianceRow",
@@ -367,7 +368,9 @@ def _large_mu(fast: bool) -> tuple[LargeMuRow, ...]:
     return tuple(sorted(rows, key=lambda r: (r.gamma, -r.one_minus_c)))
 
 
-def _largest_stick(fast: bool) -> tuple[tuple[LargestStickRow, ...], tuple[LargestStickEstimate, ...]]:
+def largest_stick_rows(fast: bool) -> tuple[tuple[LargestStickRow, ...], tuple[LargestStickEstimate, ...]]:
+    """mu(c) of the full solution at 1 - c = factor (1 - c_max) for the study's gammas and factors, and c_max from
+    the limit problem (``slip_limit``) against the closed form K'(c_max)/K(c_max) = kappa; both empty when ``fast``."""
     if fast:
         return (), ()
     rows, estimates = [], []
@@ -442,7 +445,7 @@ def expansion_study(fast: bool) -> ExpansionStudy:
         raise ValueError(f"fast must be True or False, got {fast!r}")
     solutions: dict = {}
     values = _full_mu_and_compliance(NUS, C_VALUES, fast, solutions)
-    largest_rows, largest_estimates = _largest_stick(fast)
+    largest_rows, largest_estimates = largest_stick_rows(fast)
     return ExpansionStudy(
         fast=fast,
         friction_law=_friction_law(values),

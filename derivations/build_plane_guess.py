@@ -1,4 +1,4 @@
-"""Build the plane solver's guess table (``numeric.core.plane_guess``): theta(c, gamma) of the strip punch to ~1e-9.
+"""Build the plane solver's guess table (``numeric.core.plane_guess``): theta(c, gamma) of the strip punch.
 
 1. 1 - c_max(gamma) at Chebyshev points of gamma over region L's band, from the limit problem at level 2
    (``numeric.solutions.plane_solver.solve_limit``), as the series of h = atanh(gamma) log(8 / (1 - c_max)).
@@ -10,7 +10,9 @@
    ``numeric/core/plane_guess_data.py`` with the worst relative error in mu of the guess at held-out random points
    of each region (fixed seed), measured against fresh level-2 solves (``ERRORS``).
 
-Deterministic: a re-run writes the same file. Run time: about four minutes on two cores (two processes; set
+Deterministic: a re-run writes the same file. (The limit solves of step 1 start from the file's own 1 - c_max, so a
+run from another file moves the series at rounding, 4e-11 in h, and L's coefficients by up to 1.7e-8 of 1.6 with it;
+run again, it reproduces itself.) Run time: about 2.5 minutes on two cores (two processes; set
 OPENBLAS_NUM_THREADS=1, or the BLAS threads of the two fight over the cores):
 
     OPENBLAS_NUM_THREADS=1 python derivations/build_plane_guess.py
@@ -40,7 +42,7 @@ C_MIN, GAP_S, GAP_N, GAMMA_N, GAMMA_MAX = 1e-5, 0.2, 1e-8, 0.16, 0.75
 REGION_SPECS = {"S": ("logit_c", (0.0, GAMMA_MAX), True), "N": ("log_gap", (0.0, GAMMA_N), True),
                 "L": ("log_gap_ratio", (GAMMA_N, GAMMA_MAX), False)}
 #: Chebyshev points (u, gamma) of each region, and of the series of 1 - c_max in gamma
-SIZES = {"S": (32, 14), "N": (24, 8), "L": (36, 24)}
+SIZES = {"S": (44, 18), "N": (24, 11), "L": (36, 24)}
 N_GAP_MAX = 16
 N_CHECK = {"S": 24, "N": 12, "L": 24}
 SEED = 20261127

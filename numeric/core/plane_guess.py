@@ -1,4 +1,4 @@
-"""The plane solver's starting guess: theta = atan(mu gamma) of the strip punch over the (c, gamma) plane, to ~1e-9.
+"""The plane solver's starting guess: theta = atan(mu gamma) of the strip punch over the (c, gamma) plane.
 
 The stored functions are Chebyshev series (``plane_guess_data``, written by ``derivations/build_plane_guess.py`` from
 level-2 solves) over three regions, each a rectangle in coordinates in which they are smooth:
@@ -17,7 +17,18 @@ level-2 solves) over three regions, each a rectangle in coordinates in which the
 
 Outside them (c below C_MIN, gamma below GAMMA_N with 1 - c below GAP_N, c above the tabulated c_max) ``theta_guess``
 returns None and the caller starts from the first-order law or the approach to c_max. The worst relative error in mu
-at held-out points, measured by the build against fresh level-2 solves, is ``plane_guess_data.ERRORS`` (per region).
+at held-out points, measured by the build against fresh level-2 solves, is ``plane_guess_data.ERRORS`` (per region):
+7.7e-11 (S, 44 x 18 nodes), 1.4e-11 (N, 24 x 11) and 3.7e-8 (L, 36 x 24), at the same held-out points as with 32 x 14
+and 24 x 8 nodes in S and N before (5.2e-10, 6.9e-9). Given mu, one given-c solve suffices where the guess lies within
+the solve's own scatter of theta (``THETA_SCATTER`` of ``numeric.solutions.plane_solver``, 5e-11): at 56 of 70 points
+now, 28 before (the benchmark's 11 cases and 59 random (nu, c), nu in [-0.9, 0.45], c in [0.02, 0.97]; near c_max, in
+L, still two or three). L's held-out worst understates it: on a 9 x 13 grid (gamma from 0.16 to 0.75, 1 - c from
+1.001 (1 - c_max) up) against the same careful solves the guess is 3e-12 ... 2e-8 off for gamma >= 0.23 away from
+the c_max end (x >= -0.85 in L's unit coordinate: 1 - c >= 1.02 (1 - c_max) at gamma = 0.75, 1.3 (1 - c_max) at 0.16), but up to 3e-7
+nearer (1 - c down to 1.0001 (1 - c_max); in theta, where mu gamma ~ 1e3, ~1e-10) and along the band's lower edge
+gamma = 0.16. 48 x 28 nodes brought the bulk to ~2e-10 and given mu near c_max to two solves (21 ms
+against 34-36), but left 4e-7 at that end and recorded a held-out worst (5.7e-9) that a fresh point exceeded (1.3e-8
+at nu = -1/2, c = 0.94), so they were not kept.
 
 References
 ----------

@@ -1,14 +1,18 @@
 """Build the plane solver's guess table (``numeric.core.plane_guess``): theta(c, gamma) of the strip punch.
 
-1. 1 - c_max(gamma) at Chebyshev points of gamma over region L's band, from the limit problem at level 2
-   (``numeric.solutions.plane_solver.solve_limit``), as the series of h = atanh(gamma) log(8 / (1 - c_max)).
+1. 1 - c_max(gamma) at N_GAP_MAX Chebyshev points of gamma over region L's band, from the limit problem at level 2
+   (``numeric.solutions.plane_solver.solve_limit``), as the series of h = atanh(gamma) log(8 / (1 - c_max)). Region L's
+   coordinate is log(1 - c) less log(1 - c_max), so near c_max its stored function is off by the series' relative error
+   over that distance: with 16 points the series was 2e-10 ... 8e-10 off fresh limit solves between its nodes (its last
+   coefficient 1.5e-9), with 28 within 6e-13.
 2. At Chebyshev points of the first kind of each region (S, N, L: ``REGION_SPECS``), the careful given-c solve at
-   level 2 (``numeric.core.plane_eigenvalue.plane_given_c``, ~3e-11 in mu) from the first-order law, not from the
-   table being rebuilt (the result then does not depend on it); along each gamma of region L from the largest
-   1 - c down towards c_max, each solve started from the previous two (1/(mu gamma) extrapolated linearly in 1 - c).
+   level 2 (``numeric.core.plane_eigenvalue.plane_given_c``) from the first-order law, not from the table being
+   rebuilt (the result then does not depend on it), polished by the linearised Newton (``careful_theta``); along each
+   gamma of region L from the largest 1 - c down towards c_max, each solve started from the previous two (1/(mu gamma)
+   extrapolated linearly in 1 - c).
 3. The stored functions' Chebyshev coefficients (discrete cosine transforms), written to
-   ``numeric/core/plane_guess_data.py`` with the worst relative error in mu of the guess at held-out random points
-   of each region (fixed seed), measured against fresh level-2 solves (``ERRORS``).
+   ``numeric/core/plane_guess_data.py`` with the worst relative error in mu of the guess at held-out points of each
+   region (random ones, fixed seed, and a grid near its ends), measured against fresh level-2 solves (``ERRORS``).
 
 Deterministic: a re-run writes the same file. (The limit solves of step 1 start from the file's own 1 - c_max, so a
 run from another file moves the series at rounding, 4e-11 in h, and L's coefficients by up to 1.7e-8 of 1.6 with it;
@@ -42,9 +46,15 @@ C_MIN, GAP_S, GAP_N, GAMMA_N, GAMMA_MAX = 1e-5, 0.2, 1e-8, 0.16, 0.75
 REGION_SPECS = {"S": ("logit_c", (0.0, GAMMA_MAX), True), "N": ("log_gap", (0.0, GAMMA_N), True),
                 "L": ("log_gap_ratio", (GAMMA_N, GAMMA_MAX), False)}
 #: Chebyshev points (u, gamma) of each region, and of the series of 1 - c_max in gamma
-SIZES = {"S": (44, 18), "N": (24, 11), "L": (36, 24)}
-N_GAP_MAX = 16
+SIZES = {"S": (44, 18), "N": (24, 11), "L": (52, 24)}
+N_GAP_MAX = 28
 N_CHECK = {"S": 24, "N": 12, "L": 24}
+#: Held-out points near the ends of each region too (its unit coordinates, x in u and y in gamma), besides the random
+#: ones: an interpolant at first-kind points is least accurate beyond its outermost nodes. Next to c_max (region L,
+#: x = -0.999) the guess was up to 6e-8 off where the random points' worst was 2.9e-10, and a fresh point at
+#: nu = -1/2, c = 0.94 (x = -0.95) 6.9e-10.
+EDGE_X = (-0.999, -0.99, -0.95, 0.95, 0.99, 0.999)
+EDGE_Y = (-0.999, -0.5, 0.0, 0.5, 0.999)
 SEED = 20261127
 
 
@@ -80,6 +90,20 @@ def first_order(c: float, gap: float, gamma: float) -> float:
 
 def careful_theta(name: str, c: float, gap: float, gamma: float, previous: list[tuple[float, float, float, float]]
                   ) -> float:
+    """theta at (c, gamma) of region ``name``: ``careful_root``, polished by the linearised Newton from it (its steps
+    stop at 1e-15 of theta). The careful iteration stops at 1e-10 ... 1e-9 of theta, which next to pi/2 is loose in mu
+    (d log mu / d theta ~ mu gamma): at the node of region L nearest c_max (1 - c ~ 1.0006 (1 - c_max), mu gamma ~ 2e3)
+    it had left mu 2.5e-7 ... 4e-7 from the linearised solve there, which agreed to 4e-10 with the careful iteration
+    from the first-order law. Where the polish does not converge the careful root is kept."""
+    theta = careful_root(name, c, gap, gamma, previous)
+    try:
+        return plane_given_c_linearised(c, gap, gamma, theta, PLANE_LEVELS[LEVEL]).theta
+    except SolverError:
+        return theta
+
+
+def careful_root(name: str, c: float, gap: float, gamma: float, previous: list[tuple[float, float, float, float]]
+                 ) -> float:
     """theta at (c, gamma) of region ``name`` by the careful given-c solve at LEVEL: from the first-order law, or
     (region L, near c_max) from the previous two solves of the row, 1/(mu gamma) extrapolated linearly in 1 - c, else
     from the larger of the first-order law and the approach mu gamma = 1.4 (1 - c_max) / (c_max - c) (both fall
@@ -153,8 +177,8 @@ def write(gap_max_series: np.ndarray, coefs: dict[str, np.ndarray], errors: dict
              f"LEVEL = {LEVEL}",
              "#: name -> (coordinate, gamma band, gamma^2 coordinate)",
              "REGIONS = {" + ", ".join(f"{k!r}: ({c!r}, {tuple(b)!r}, {sq!r})" for k, (c, b, sq) in REGION_SPECS.items()) + "}",
-             f"#: worst relative error of the guess in mu at held-out points of each region (seed {SEED}), against level-{LEVEL}",
-             "#: solves",
+             f"#: worst relative error of the guess in mu at held-out points of each region (random, seed {SEED}, and near its",
+             f"#: ends, EDGE_X x EDGE_Y), against level-{LEVEL} solves",
              f"ERRORS = {errors!r}",
              f"GAP_MAX_SERIES = {literal(gap_max_series)}",
              "COEFFICIENTS = {"]
@@ -197,6 +221,9 @@ def main() -> None:
         for _ in range(n):
             g = gamma_at(region, float(rng.uniform(-1.0, 1.0)))
             points.append((name, u_at(region, float(rng.uniform(-1.0, 1.0)), g), g))
+    for name in N_CHECK:
+        region = plane_guess.REGIONS[name]
+        points += [(name, u_at(region, x, g), g) for g in (gamma_at(region, y) for y in EDGE_Y) for x in EDGE_X]
     with ProcessPoolExecutor(max_workers=2, initializer=_reload) as pool:
         found = list(pool.map(check_point, points))
     errors = {name: float(f"{max(e for (n, _, _), e in zip(points, found) if n == name):.2g}") for name in N_CHECK}

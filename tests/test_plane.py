@@ -551,10 +551,11 @@ def test_the_linearised_iteration_settles_at_its_rounding_near_nu_a_half(nu, c):
         root = plane_given_c_linearised(c, 1 - c, g, theta * (1 + k), PLANE_LEVELS[2], GUESS_SPREAD).theta
         assert abs(math.tan(root) / g - s.field.mu) <= error
 
-def test_one_round_given_c_and_two_solves_given_mu(monkeypatch):
-    # what the table buys: given c, one linearised round (two assemblies); given mu, two given-c solves (the table's c,
-    # then one step in logit c, after which theta lies within the given-c solve's scatter THETA_SCATTER), each one
-    # round; the error estimate only when read; c within its estimated error
+def test_one_round_given_c_and_one_solve_given_mu(monkeypatch):
+    # what the table buys: given c, one linearised round (two assemblies); given mu, one given-c solve at the table's c,
+    # whose theta already lies within the solve's own scatter THETA_SCATTER of atan(mu gamma) (with the coarser table
+    # of 5.2e-10 ... 3.7e-8 it took a second solve, one step in logit c, here and at 42 of 70 points), one round; the
+    # error estimate only when read; c within its estimated error
     from numeric.core import plane_eigenvalue
     from numeric.solutions.solution import DeferredError
     rounds = []
@@ -564,7 +565,7 @@ def test_one_round_given_c_and_two_solves_given_mu(monkeypatch):
     assert len(rounds) == 1 and isinstance(s._error, DeferredError)
     rounds.clear()
     back = plane.flat_punch(nu=0.0, mu=s.mu)
-    assert len(rounds) == 2 and abs(back.c - 0.9) <= back.error
+    assert len(rounds) == 1 and abs(back.c - 0.9) <= back.error
 
 
 @pytest.mark.parametrize("nu, c", [(0.25, 0.5), (0.0, 0.995), (-0.9, 0.3)])

@@ -17,18 +17,20 @@ level-2 solves) over three regions, each a rectangle in coordinates in which the
 
 Outside them (c below C_MIN, gamma below GAMMA_N with 1 - c below GAP_N, c above the tabulated c_max) ``theta_guess``
 returns None and the caller starts from the first-order law or the approach to c_max. The worst relative error in mu
-at held-out points, measured by the build against fresh level-2 solves, is ``plane_guess_data.ERRORS`` (per region):
-7.7e-11 (S, 44 x 18 nodes), 1.4e-11 (N, 24 x 11) and 3.7e-8 (L, 36 x 24), at the same held-out points as with 32 x 14
-and 24 x 8 nodes in S and N before (5.2e-10, 6.9e-9). Given mu, one given-c solve suffices where the guess lies within
-the solve's own scatter of theta (``THETA_SCATTER`` of ``numeric.solutions.plane_solver``, 5e-11): at 56 of 70 points
-now, 28 before (the benchmark's 11 cases and 59 random (nu, c), nu in [-0.9, 0.45], c in [0.02, 0.97]; near c_max, in
-L, still two or three). L's held-out worst understates it: on a 9 x 13 grid (gamma from 0.16 to 0.75, 1 - c from
-1.001 (1 - c_max) up) against the same careful solves the guess is 3e-12 ... 2e-8 off for gamma >= 0.23 away from
-the c_max end (x >= -0.85 in L's unit coordinate: 1 - c >= 1.02 (1 - c_max) at gamma = 0.75, 1.3 (1 - c_max) at 0.16), but up to 3e-7
-nearer (1 - c down to 1.0001 (1 - c_max); in theta, where mu gamma ~ 1e3, ~1e-10) and along the band's lower edge
-gamma = 0.16. 48 x 28 nodes brought the bulk to ~2e-10 and given mu near c_max to two solves (21 ms
-against 34-36), but left 4e-7 at that end and recorded a held-out worst (5.7e-9) that a fresh point exceeded (1.3e-8
-at nu = -1/2, c = 0.94), so they were not kept.
+at held-out points (random ones and a grid near each region's ends), measured by the build against fresh level-2 solves,
+is ``plane_guess_data.ERRORS``: 6.1e-9 in S (44 x 18 nodes; 7.2e-11 at the random points, the worst at its end c =
+C_MIN, gamma = 0.017), 1.2e-10 in N (24 x 11) and 5.7e-8 in L (52 x 24; 2.9e-10 at the random points, the worst next
+to c_max, x = -0.999 in L's unit coordinate, gamma = 0.75, beyond the outermost node). On a 9 x 13 grid over L the guess
+is within 1e-9 for x >= -0.95, 5e-10 ... 4e-9 at x = -0.99 and 8e-9 ... 6e-8 at x = -0.999 (1 - c within 0.1 % of
+1 - c_max; in theta, where mu gamma ~ 1e3, ~1e-11).
+
+Before (32 x 14, 24 x 8 and 36 x 24 nodes, random held-out points only: 5.2e-10, 6.9e-9, 3.7e-8) L was up to 3e-7 off
+on that grid next to c_max and along gamma = 0.16: L's coordinate divides by x = log((1 - c)/(1 - c_max)), and the
+series of 1 - c_max (16 nodes) was 2e-10 ... 8e-10 off fresh limit solves (28 nodes: 6e-13); and the build's careful
+solves stopped at a tolerance in theta that is loose in mu next to pi/2 (now polished, ``careful_theta``). Given mu,
+one given-c solve suffices where the guess lies within the solve's own scatter of theta (``THETA_SCATTER`` of
+``numeric.solutions.plane_solver``, 5e-11): at 69 of 70 points now, 28 before (the benchmark's 11 cases and 59 random
+(nu, c), nu in [-0.9, 0.45], c in [0.02, 0.97]), near c_max included.
 
 References
 ----------

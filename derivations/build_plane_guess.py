@@ -16,7 +16,7 @@
 
 Deterministic: a re-run writes the same file. (The limit solves of step 1 start from the file's own 1 - c_max, so a
 run from another file moves the series at rounding, 4e-11 in h, and L's coefficients by up to 1.7e-8 of 1.6 with it;
-run again, it reproduces itself.) Run time: about 2.5 minutes on two cores (two processes; set
+run again, it reproduces itself.) Run time: about three minutes on two cores (two processes; set
 OPENBLAS_NUM_THREADS=1, or the BLAS threads of the two fight over the cores):
 
     OPENBLAS_NUM_THREADS=1 python derivations/build_plane_guess.py
@@ -90,11 +90,12 @@ def first_order(c: float, gap: float, gamma: float) -> float:
 
 def careful_theta(name: str, c: float, gap: float, gamma: float, previous: list[tuple[float, float, float, float]]
                   ) -> float:
-    """theta at (c, gamma) of region ``name``: ``careful_root``, polished by the linearised Newton from it (its steps
-    stop at 1e-15 of theta). The careful iteration stops at 1e-10 ... 1e-9 of theta, which next to pi/2 is loose in mu
-    (d log mu / d theta ~ mu gamma): at the node of region L nearest c_max (1 - c ~ 1.0006 (1 - c_max), mu gamma ~ 2e3)
-    it had left mu 2.5e-7 ... 4e-7 from the linearised solve there, which agreed to 4e-10 with the careful iteration
-    from the first-order law. Where the polish does not converge the careful root is kept."""
+    """theta at (c, gamma) of region ``name``: ``careful_root``, polished by the linearised Newton from it (from a start
+    that close its one step leaves theta at its rounding). The careful iteration stops once its steps or its bracket are
+    within 1e-12 ... 1e-10 of theta, which next to pi/2 is loose in mu (d log mu / d theta ~ mu gamma): at the node of
+    region L nearest c_max (1 - c ~ 1.0006 (1 - c_max), mu gamma ~ 2e3) it had left mu 2.5e-7 ... 4e-7 from the
+    linearised solve there, which agreed to 4e-10 with the careful iteration from the first-order law. Where the polish
+    does not converge the careful root is kept."""
     theta = careful_root(name, c, gap, gamma, previous)
     try:
         return plane_given_c_linearised(c, gap, gamma, theta, PLANE_LEVELS[LEVEL]).theta

@@ -681,7 +681,7 @@ def test_the_error_is_formed_on_demand_and_pickled_with_its_value():
 @pytest.mark.slow
 def test_the_guess_table_is_reproduced_by_its_script():
     # regenerating the committed table gives the same file (deterministic: fixed nodes and seed); the script runs in
-    # its own process (its worker pool needs its functions importable), about 2.5 minutes on two cores
+    # its own process (its worker pool needs its functions importable), about three minutes on two cores
     import os
     import subprocess
     import sys

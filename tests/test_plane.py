@@ -568,6 +568,22 @@ def test_one_round_given_c_and_one_solve_given_mu(monkeypatch):
     assert len(rounds) == 1 and abs(back.c - 0.9) <= back.error
 
 
+@pytest.mark.parametrize("nu, c", [(0.0, 0.99), (-0.5, 0.93), (0.3, 0.9999), (-0.5, 0.5)])
+def test_given_mu_takes_one_solve_near_c_max_too(nu, c, monkeypatch):
+    # next to c_max (region L of the guess table) as inside: the table's c lands within the given-c solve's own scatter
+    # of theta, so given mu is one given-c solve (two or three there with the table before its 1 - c_max series and its
+    # nodes were refined, numeric.core.plane_guess), and c is within its estimated error of the case's c (mu from a
+    # level-3 solve at c: level 3's own error is far below level 2's estimate)
+    from numeric.core import plane_eigenvalue
+    rounds = []  # one linearised round a given-c solve from a close start (test_one_round_given_c_and_one_solve_given_mu)
+    original = plane_eigenvalue.linearised_system
+    monkeypatch.setattr(plane_eigenvalue, "linearised_system", lambda *a: rounds.append(a) or original(*a))
+    mu = plane.flat_punch(nu=nu, c=c, level=3).mu
+    rounds.clear()
+    s = plane.flat_punch(nu=nu, mu=mu)
+    assert len(rounds) == 1 and abs(s.gap - (1.0 - c)) <= s.error
+
+
 @pytest.mark.parametrize("nu, c", [(0.25, 0.5), (0.0, 0.995), (-0.9, 0.3)])
 def test_given_mu_carries_the_solution_along_newtons_tangent(nu, c, monkeypatch):
     # given mu, the last given-c solve's z is carried to theta = atan(mu gamma) along Newton's dz/dtheta

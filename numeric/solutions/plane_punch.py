@@ -35,7 +35,7 @@ from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_max, gap_max_relative_error
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
-from numeric.solutions.plane_small_gamma import (DIRECT_FIELDS_GAMMA, SERIES_GAP_MIN, SMALL_GAMMA, UnresolvedField,
+from numeric.solutions.plane_small_gamma import (SERIES_GAP_MIN, SMALL_GAMMA, UnresolvedField,
                                                  friction_slope)
 from numeric.solutions.flat_punch import check_level, check_rtol
 from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORDER_GAMMA, FIRST_ORDER_R_MAX,
@@ -122,8 +122,8 @@ class StripPunchSolution:
         CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
         "full stick to within ..." (1 - c < 2^-40 at small gamma), "near full stick at small gamma ..." (gamma < 0.02,
-        1 - c < 1e-8: the solver or the first-order law; stresses not computed below gamma = 1e-3) or "c = ... is c_max
-        to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
+        1 - c < 1e-8: the solver with its stresses, or below gamma = 1.7e-4 the first-order law without them) or
+        "c = ... is c_max to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
 
@@ -202,16 +202,16 @@ def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, e
               solved: PlaneField | None, level: int) -> StripPunchSolution:
     """Small gamma (< ``SMALL_GAMMA``) and 1 - c < ``SERIES_GAP_MIN``: ``solved`` the solver's field at gamma
     itself (mu and c with its error), else (gamma < ``FIRST_ORDER_GAMMA``, or given mu where the solver's secant in c
-    did not converge) the first-order law; the stresses of the solve where gamma >= ``DIRECT_FIELDS_GAMMA``, else not
-    computed."""
+    did not converge) the first-order law; the stresses of the solve where there is one, else not computed (the law
+    gives mu and c only; a solve below ``FIRST_ORDER_GAMMA`` would carry its rounding, module docstring of
+    ``numeric.solutions.plane_small_gamma``)."""
     how = (f"solver level {level} at gamma itself" if solved is not None else
            f"the first-order law mu/gamma = K(c)/K'(c) (error {FIRST_ORDER_R_MAX:g} gamma^2 relative in mu)")
     route = f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}): mu and c from {how}"
-    if solved is not None and gamma >= DIRECT_FIELDS_GAMMA:
+    if solved is not None:
         return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; its stresses", solved.residual, solved)
-    reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} < {DIRECT_FIELDS_GAMMA:g} with "
-              f"1 - c = {gap:.3g} < {SERIES_GAP_MIN:g}: there the solver's shear and slip carry a rounding of up to "
-              "~1e-7 relative")
+    reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} with 1 - c = {gap:.3g} < "
+              f"{SERIES_GAP_MIN:g}: mu and c are the first-order law's, and a solve there carries its rounding")
     return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; stresses not computed", 0.0,
                               UnresolvedField(reason))
 

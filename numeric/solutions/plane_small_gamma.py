@@ -21,11 +21,17 @@ rounding and its stick shear a near-null mode, so that mu's relative error grew 
 the series' p and q/gamma were 2e-9 and 8e-9 off level 4 at x = c, the solver's level 2 1e-9 and 2e-9 at 1e-3 and
 1e-12 at 1e-8), and the series serves the law and the tests as an independent route.
 
-Next to c = 1 (1 - c < ``SERIES_GAP_MIN``) at gamma < ``SMALL_GAMMA`` the solver's rounding grows again (measured
-against level 4 at 1 - c = 1e-10, 1e-12: mu 6e-10 ... 1e-8, q/gamma up to 7e-8, u 2e-7 at gamma = 2e-4 ... 5e-4;
-5e-11, 3e-10 at gamma = 5e-3): there the routes (``numeric.solutions.plane_punch``) take the first-order law below
-``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` and do not give the stresses below ``DIRECT_FIELDS_GAMMA``
-(``UnresolvedField``).
+Next to c = 1 (1 - c < ``SERIES_GAP_MIN``) at gamma < ``SMALL_GAMMA`` the routes (``numeric.solutions.plane_punch``)
+take the first-order law below ``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` (there the solver's mu loses
+digits, measured against the law's r) and give mu and c only (``UnresolvedField``); above it, the solver at gamma
+itself with its stresses. Measured with the system as it is now (balanced below alpha = 1/4, the stick pressure
+pinned from alpha = 0.04), levels 2 and 3 against level 4 at gamma = 1.7e-4, 3e-4, 5e-4, 1e-3 and 1 - c = 1e-9,
+1e-10, 1e-12, 1e-14 (16 cases; x = 0, 0.3, 0.6, 0.9, 0.99, 1 - 1e-6, next to c on either side, c, and three points
+across the slip zones): mu within 4.5e-12, q within 5.9e-12 of max(1, |p|) (6e-11 of its own largest value), the slip
+within 1e-8 of its own value (which is 1e-10 ... 1e-30: the zones are 1e-9 ... 1e-14 wide), p within 1.0e-9 of max(1,
+|p|) inside the slip zones, where p ~ (1 - x)^(alpha - 1/2) is largest (level 2: 8.7e-10), and 1.5e-13 elsewhere.
+(The first measurement, before the pins and the balance's present form, had q/gamma up to 7e-8 and mu 1e-8 off at
+gamma = 2e-4 ... 5e-4, and the stresses were not given below gamma = 1e-3.)
 
 References
 ----------
@@ -45,7 +51,7 @@ from scipy import special
 from numeric.core.plane_guess import elliptic_ratio
 from numeric.solutions.plane_solver import solve_given_c
 
-__all__ = ["SMALL_GAMMA", "NODES", "SERIES_GAP_MIN", "DIRECT_FIELDS_GAMMA", "GammaSeries", "UnresolvedField",
+__all__ = ["SMALL_GAMMA", "NODES", "SERIES_GAP_MIN", "GammaSeries", "UnresolvedField",
            "node_friction", "gamma_series", "friction_slope"]
 
 #: Below this gamma (nu > 0.4898) the law takes r from the series (``numeric.solutions.plane_law``), and next to c = 1
@@ -55,9 +61,6 @@ SMALL_GAMMA = 0.02
 NODES = (0.06, 0.08, 0.1, 0.12, 0.14, 0.16)
 #: Below this 1 - c (at gamma < SMALL_GAMMA) the routes' near-one handling; the series is not formed there.
 SERIES_GAP_MIN = 1e-8
-#: Below 1 - c = SERIES_GAP_MIN the stresses are those of the solver at gamma itself from this gamma on, and not
-#: computed below it (module docstring: q/gamma up to 7e-8 off at gamma = 2e-4 ... 5e-4, 2e-9 ... 1e-8 at 1e-3).
-DIRECT_FIELDS_GAMMA = 1e-3
 
 
 @lru_cache(maxsize=32)

@@ -123,7 +123,7 @@ def test_tiny_gamma_given_mu_is_full_stick_at_once(gamma):
     # mu = 0.3 at gamma -> 0: the first-order law tan(theta) = gamma^2 K(c)/K'(c) puts 1 - c = 8 exp(-pi mu/gamma) = 0
     # (closed form), below FULL_STICK_GAP: full stick, as numeric.flat_punch(gamma=1e-20, mu=0.3) answers c = 1. The
     # solver at gamma itself raised SolverError after 5-9 s (gamma = 1e-16, 1e-28, 1e-100) or NoEigenvalueError after
-    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 1.7e-4)
+    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 3e-5)
     from asymptotics.plane import slip_width_first_order
     from numeric.solutions.plane_solver import FULL_STICK_GAP
     for mu in (0.3, 1e-8):
@@ -178,7 +178,7 @@ def test_near_full_stick_at_small_gamma():
 def test_the_stresses_next_to_full_stick_at_small_gamma_converge(gamma, gap):
     # 1 - c below SERIES_GAP_MIN at FIRST_ORDER_GAMMA <= gamma < 1e-3, where the stresses were not given before they
     # were measured: the route's p, q (default level) against level 4 within the stated 1e-9 of max(1, |p|), on the
-    # stick zone, next to c and across the slip zones (measured 3.0e-10 and 7.8e-11 here, at most 8.7e-10 over 16 such
+    # stick zone, next to c and across the slip zones (measured 3.0e-10 and 7.8e-11, at most 8.7e-10 over 16 such
     # cases, inside the slip zones, where p ~ (1 - x)^(alpha - 1/2) is largest); and p(0) against Sadowsky's 1/pi of
     # the frictionless punch, which the coupling changes by O(gamma^2) (measured 0.5 gamma^2: 4.5e-8 and 5e-7; bound
     # 10 gamma^2)
@@ -191,6 +191,20 @@ def test_the_stresses_next_to_full_stick_at_small_gamma_converge(gamma, gap):
     assert np.max(np.abs(s.pressure(x) - ref.pressure(x)) / scale) < 1e-9
     assert np.max(np.abs(s.shear(x) - ref.shear(x)) / scale) < 1e-9
     assert abs(math.pi * float(s.pressure(0.0)) - 1.0) < 10.0 * gamma**2
+
+
+def test_the_solvers_mu_next_to_full_stick_holds_below_first_order_gamma():
+    # below FIRST_ORDER_GAMMA the route takes the first-order law for speed, not for the solver's accuracy (its
+    # docstring): at 1 - c = 1e-12 the solver's r = (mu/mu_1 - 1)/gamma^2 (mu_1 the first-order law, a closed form; the
+    # law itself has r = 0 and the bound 60) at gamma = 5e-5 against r at gamma = 1e-3, where the route takes the solver
+    # (r changes like gamma^2 between them: measured 30.3124 against 30.3136); bound 0.05, 1.25e-10 in mu
+    from numeric.core.plane_guess import elliptic_ratio
+    from numeric.solutions.plane_solver import FIRST_ORDER_GAMMA
+    c = 1.0 - 1e-12
+    gap = 1.0 - c  # exact (Sterbenz), as the route forms it
+    r = {gamma: (solve_given_c(c, gap, gamma, 2).field.mu / (gamma / elliptic_ratio(c, gap)) - 1.0) / gamma**2
+         for gamma in (5e-5, 1e-3)}
+    assert 5e-5 < FIRST_ORDER_GAMMA < 1e-3 and abs(r[5e-5] - r[1e-3]) < 0.05
 
 
 @pytest.mark.parametrize("nu", [0.2, 0.3, 0.4, 0.44, 0.45, 0.49, 0.4999999])

@@ -271,8 +271,8 @@ FIRST_ORDER_R_MAX = 60.0
 #: pressure pinned from alpha = 0.04), at gamma = 3e-5, 5e-5, 1e-4, 1.5e-4 and 1 - c = 1e-9, 1e-10, 1e-12, 1e-14,
 #: 1e-16 levels 2 and 3 lie within 3.1e-11 of level 4 in mu, and r = (mu/mu_1 - 1)/gamma^2 of levels 2 and 3 within
 #: 1e-2 of its value at larger gamma (30.3124 at 1 - c = 1e-12: mu within ~1e-12; at gamma = 1e-5 level 4 loses it, r
-#: 33.6 against 30.33). (A measurement on the earlier balanced system, r of levels 1-3 against 30.31, had the solver's mu
-#: 2.7e-9, 3.5e-8, 2.3e-7 and 6.4e-7 off at gamma = 3e-4, 1e-4, 3e-5, 1e-5; it no longer holds.) The solver would be
+#: 33.6 against 30.33). (A measurement on the earlier balanced system, r of levels 1-3 against 30.31, had the solver's
+#: mu 2.7e-9, 3.5e-8, 2.3e-7 and 6.4e-7 off at gamma = 3e-4, 1e-4, 3e-5, 1e-5; it no longer holds.) The solver would be
 #: the better default down to 3e-5 once the rtol route can still take the law where its bound meets rtol.
 FIRST_ORDER_GAMMA = 1.7e-4
 

@@ -551,16 +551,25 @@ def test_the_linearised_iteration_settles_at_its_rounding_near_nu_a_half(nu, c):
         root = plane_given_c_linearised(c, 1 - c, g, theta * (1 + k), PLANE_LEVELS[2], GUESS_SPREAD).theta
         assert abs(math.tan(root) / g - s.field.mu) <= error
 
-def test_one_round_given_c_and_one_solve_given_mu(monkeypatch):
+
+@pytest.fixture
+def linearised_rounds(monkeypatch):
+    """The arguments of every linearised round (``numeric.core.plane_eigenvalue.linearised_system``) from here on: a
+    given-c solve from a close start is one round."""
+    from numeric.core import plane_eigenvalue
+    rounds = []
+    original = plane_eigenvalue.linearised_system
+    monkeypatch.setattr(plane_eigenvalue, "linearised_system", lambda *a: rounds.append(a) or original(*a))
+    return rounds
+
+
+def test_one_round_given_c_and_one_solve_given_mu(linearised_rounds):
     # what the table buys: given c, one linearised round (two assemblies); given mu, one given-c solve at the table's c,
     # whose theta already lies within the solve's own scatter THETA_SCATTER of atan(mu gamma) (with the coarser table
     # of 5.2e-10 ... 3.7e-8 it took a second solve, one step in logit c, here and at 42 of 70 points), one round; the
     # error estimate only when read; c within its estimated error
-    from numeric.core import plane_eigenvalue
     from numeric.solutions.solution import DeferredError
-    rounds = []
-    original = plane_eigenvalue.linearised_system
-    monkeypatch.setattr(plane_eigenvalue, "linearised_system", lambda *a: rounds.append(a) or original(*a))
+    rounds = linearised_rounds
     s = plane.flat_punch(nu=0.0, c=0.9)
     assert len(rounds) == 1 and isinstance(s._error, DeferredError)
     rounds.clear()
@@ -569,15 +578,12 @@ def test_one_round_given_c_and_one_solve_given_mu(monkeypatch):
 
 
 @pytest.mark.parametrize("nu, c", [(0.0, 0.99), (-0.5, 0.93), (0.3, 0.9999), (-0.5, 0.5)])
-def test_given_mu_takes_one_solve_near_c_max_too(nu, c, monkeypatch):
+def test_given_mu_takes_one_solve_near_c_max_too(nu, c, linearised_rounds):
     # next to c_max (region L of the guess table) as inside: the table's c lands within the given-c solve's own scatter
     # of theta, so given mu is one given-c solve (two or three there with the table before its 1 - c_max series and its
     # nodes were refined, numeric.core.plane_guess), and c is within its estimated error of the case's c (mu from a
     # level-3 solve at c: level 3's own error is far below level 2's estimate)
-    from numeric.core import plane_eigenvalue
-    rounds = []  # one linearised round a given-c solve from a close start (test_one_round_given_c_and_one_solve_given_mu)
-    original = plane_eigenvalue.linearised_system
-    monkeypatch.setattr(plane_eigenvalue, "linearised_system", lambda *a: rounds.append(a) or original(*a))
+    rounds = linearised_rounds
     mu = plane.flat_punch(nu=nu, c=c, level=3).mu
     rounds.clear()
     s = plane.flat_punch(nu=nu, mu=mu)

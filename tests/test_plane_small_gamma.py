@@ -123,7 +123,7 @@ def test_tiny_gamma_given_mu_is_full_stick_at_once(gamma):
     # mu = 0.3 at gamma -> 0: the first-order law tan(theta) = gamma^2 K(c)/K'(c) puts 1 - c = 8 exp(-pi mu/gamma) = 0
     # (closed form), below FULL_STICK_GAP: full stick, as numeric.flat_punch(gamma=1e-20, mu=0.3) answers c = 1. The
     # solver at gamma itself raised SolverError after 5-9 s (gamma = 1e-16, 1e-28, 1e-100) or NoEigenvalueError after
-    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 3e-5)
+    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 1.7e-4)
     from asymptotics.plane import slip_width_first_order
     from numeric.solutions.plane_solver import FULL_STICK_GAP
     for mu in (0.3, 1e-8):

@@ -22,9 +22,9 @@ the series' p and q/gamma were 2e-9 and 8e-9 off level 4 at x = c, the solver's 
 1e-12 at 1e-8), and the series serves the law and the tests as an independent route.
 
 Next to c = 1 (1 - c < ``SERIES_GAP_MIN``) at gamma < ``SMALL_GAMMA`` the routes (``numeric.solutions.plane_punch``)
-take the first-order law below ``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` (there the solver's mu loses
-digits, measured against the law's r) and give mu and c only (``UnresolvedField``); above it, the solver at gamma
-itself with its stresses. Measured with the system as it is now (balanced below alpha = 1/4, the stick pressure
+take the first-order law below ``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` (for speed: a solve there costs
+0.3 ... 1.7 s, the law nothing; its docstring) and give mu and c only (``UnresolvedField``); above it, the solver at
+gamma itself with its stresses. Measured with the system as it is now (balanced below alpha = 1/4, the stick pressure
 pinned from alpha = 0.04), levels 2 and 3 against level 4 at gamma = 1.7e-4, 3e-4, 5e-4, 1e-3 and 1 - c = 1e-9,
 1e-10, 1e-12, 1e-14 (16 cases; x = 0, 0.3, 0.6, 0.9, 0.99, 1 - 1e-6, next to c on either side, c, and three points
 across the slip zones): mu within 4.5e-12, q within 5.9e-12 of max(1, |p|) (6e-11 of its own largest value), the slip

@@ -91,7 +91,7 @@ def test_extreme_moduli_give_a_finite_answer_or_a_clear_error():
 
 
 def test_where_the_stresses_are_not_computed_the_calculator_says_so():
-    # nu = 0.49999 (gamma = 2e-5, below FIRST_ORDER_GAMMA = 1.7e-4), mu = 1.6e-4: 1 - c = 9.7e-11, below the small-gamma
+    # nu = 0.49999 (gamma = 2e-5, below FIRST_ORDER_GAMMA = 3e-5), mu = 1.6e-4: 1 - c = 9.7e-11, below the small-gamma
     # series' reach, where mu and c are the first-order law's and the strip punch's stresses are not computed
     # (NotImplementedError): the strip's centre pressure and slip are None, and the cylinder, whose half-width needs the
     # pressure, raises ValueError (the CLI prints it). At nu = 0.4999 (gamma = 2e-4), mu = 1.5e-3 (1 - c = 4.7e-10) the

@@ -123,7 +123,7 @@ def test_tiny_gamma_given_mu_is_full_stick_at_once(gamma):
     # mu = 0.3 at gamma -> 0: the first-order law tan(theta) = gamma^2 K(c)/K'(c) puts 1 - c = 8 exp(-pi mu/gamma) = 0
     # (closed form), below FULL_STICK_GAP: full stick, as numeric.flat_punch(gamma=1e-20, mu=0.3) answers c = 1. The
     # solver at gamma itself raised SolverError after 5-9 s (gamma = 1e-16, 1e-28, 1e-100) or NoEigenvalueError after
-    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below 1.7e-4)
+    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below FIRST_ORDER_GAMMA)
     from asymptotics.plane import slip_width_first_order
     from numeric.solutions.plane_solver import FULL_STICK_GAP
     for mu in (0.3, 1e-8):
@@ -174,14 +174,14 @@ def test_near_full_stick_at_small_gamma():
     assert abs(back.c - tiny.c) <= back.error
 
 
-@pytest.mark.parametrize("gamma, gap", [(3e-4, 1e-10), (1e-3, 1e-12)])
+@pytest.mark.parametrize("gamma, gap", [(5e-5, 1e-10), (3e-4, 1e-10), (1e-3, 1e-12)])
 def test_the_stresses_next_to_full_stick_at_small_gamma_converge(gamma, gap):
     # 1 - c below SERIES_GAP_MIN at FIRST_ORDER_GAMMA <= gamma < 1e-3, where the stresses were not given before they
-    # were measured: the route's p, q (default level) against level 4 within the stated 1e-9 of max(1, |p|), on the
-    # stick zone, next to c and across the slip zones (measured 3.0e-10 and 7.8e-11, at most 8.7e-10 over 16 such
-    # cases, inside the slip zones, where p ~ (1 - x)^(alpha - 1/2) is largest); and p(0) against Sadowsky's 1/pi of
-    # the frictionless punch, which the coupling changes by O(gamma^2) (measured 0.5 gamma^2: 4.5e-8 and 5e-7; bound
-    # 10 gamma^2)
+    # were measured (below gamma = 1.7e-4 until the rtol route could choose the law): the route's p, q (default level)
+    # against level 4 within the stated 1e-9 of max(1, |p|), on the stick zone, next to c and across the slip zones
+    # (measured 3.0e-10 and 7.8e-11, at most 8.7e-10 over 16 such cases at gamma >= 1.7e-4 and 20 below, inside the
+    # slip zones, where p ~ (1 - x)^(alpha - 1/2) is largest); and p(0) against Sadowsky's 1/pi of the frictionless
+    # punch, which the coupling changes by O(gamma^2) (measured 0.5 gamma^2: 4.5e-8 and 5e-7; bound 10 gamma^2)
     c = 1.0 - gap
     s = plane.flat_punch(gamma=gamma, c=c)
     ref = plane.flat_punch(gamma=gamma, c=c, level=4)
@@ -193,18 +193,52 @@ def test_the_stresses_next_to_full_stick_at_small_gamma_converge(gamma, gap):
     assert abs(math.pi * float(s.pressure(0.0)) - 1.0) < 10.0 * gamma**2
 
 
-def test_the_solvers_mu_next_to_full_stick_holds_below_first_order_gamma():
-    # below FIRST_ORDER_GAMMA the route takes the first-order law for speed, not for the solver's accuracy (its
-    # docstring): at 1 - c = 1e-12 the solver's r = (mu/mu_1 - 1)/gamma^2 (mu_1 the first-order law, a closed form; the
-    # law itself has r = 0 and the bound 60) at gamma = 5e-5 against r at gamma = 1e-3, where the route takes the solver
-    # (r changes like gamma^2 between them: measured 30.3124 against 30.3136); bound 0.05, 1.25e-10 in mu
+def test_the_solver_answers_next_to_full_stick_down_to_first_order_gamma():
+    # the route took the first-order law below gamma = 1.7e-4 for speed, its mu up to 1.5e-6 off; now the solver from
+    # FIRST_ORDER_GAMMA = 3e-5 up: at 1 - c = 1e-12 the route's r = (mu/mu_1 - 1)/gamma^2 (mu_1 the first-order law, a
+    # closed form; the law itself has r = 0 and the bound 60) at gamma = 5e-5 against r at gamma = 1e-3 (r changes like
+    # gamma^2 between them: measured 30.3124 against 30.3136); bound 0.05, 1.25e-10 in mu
     from numeric.core.plane_guess import elliptic_ratio
     from numeric.solutions.plane_solver import FIRST_ORDER_GAMMA
     c = 1.0 - 1e-12
     gap = 1.0 - c  # exact (Sterbenz), as the route forms it
-    r = {gamma: (solve_given_c(c, gap, gamma, 2).field.mu / (gamma / elliptic_ratio(c, gap)) - 1.0) / gamma**2
-         for gamma in (5e-5, 1e-3)}
-    assert 5e-5 < FIRST_ORDER_GAMMA < 1e-3 and abs(r[5e-5] - r[1e-3]) < 0.05
+    routes = {gamma: plane.flat_punch(gamma=gamma, c=c) for gamma in (5e-5, 1e-3)}
+    r = {gamma: (s.mu / (gamma / elliptic_ratio(c, gap)) - 1.0) / gamma**2 for gamma, s in routes.items()}
+    assert FIRST_ORDER_GAMMA <= 5e-5 and all("solver level 2 at gamma itself" in s.route for s in routes.values())
+    assert abs(r[5e-5] - r[1e-3]) < 0.05
+
+
+def test_rtol_takes_the_law_next_to_full_stick_where_its_bound_meets_it():
+    # gamma = 1e-4, 1 - c = 1e-10: the solve costs ~0.3 s (given c) and ~2 s (given mu); at rtol = 1e-4 the first-order
+    # law's bound, 60 gamma^2 = 6e-7 relative, meets rtol: mu is the law's closed form, its stated error that bound,
+    # and the solver's level-2 mu (an independent route, within 1e-10 of level 4 here) lies within it (measured 2.2e-7
+    # relative: r = 22); the stresses are a level-0 solve at c on first read, against level 2 within rtol of
+    # max(1, |p|) (measured 8.3e-9, 1.2e-11). At rtol = 1e-10 the bound does not meet it and the solver answers, its
+    # error within rtol (the estimate's floor). Given mu at rtol = 1e-4: the law's c, whose stated error covers the
+    # solver's c (measured 5.5e-16 against 1.5e-15)
+    import pickle
+    import warnings
+    from numeric.core.plane_guess import elliptic_ratio
+    from numeric.solutions.plane_solver import FIRST_ORDER_R_MAX
+    gamma, c = 1e-4, 1.0 - 1e-10
+    gap = 1.0 - c
+    solver = plane.flat_punch(gamma=gamma, c=c)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        loose = plane.flat_punch(gamma=gamma, c=c, rtol=1e-4)
+        tight = plane.flat_punch(gamma=gamma, c=c, rtol=1e-10)
+        back = plane.flat_punch(gamma=gamma, mu=solver.mu, rtol=1e-4)
+    assert "first-order law" in loose.route and loose.mu == gamma / elliptic_ratio(c, gap)
+    assert loose.error == pytest.approx(FIRST_ORDER_R_MAX * gamma**2 * loose.mu, rel=1e-15)
+    assert abs(loose.mu - solver.mu) <= loose.error <= 1e-4 * loose.mu
+    x = np.array([0.0, 0.3, 0.9, 0.999999, c - 10 * gap, c + 0.01 * gap, c + 0.5 * gap, c + 0.99 * gap])
+    scale = np.maximum(1.0, np.abs(solver.pressure(x)))
+    assert np.max(np.abs(loose.pressure(x) - solver.pressure(x)) / scale) < 1e-4
+    assert np.max(np.abs(loose.shear(x) - solver.shear(x)) / scale) < 1e-4
+    copy = pickle.loads(pickle.dumps(loose))  # with its field, formed (the solve behind it does not travel)
+    assert np.array_equal(copy.pressure(x), loose.pressure(x))
+    assert "solver level 2 at gamma itself" in tight.route and tight.error <= 1e-10 * tight.mu
+    assert "first-order law" in back.route and abs(back.c - c) <= back.error
 
 
 @pytest.mark.parametrize("nu", [0.2, 0.3, 0.4, 0.44, 0.45, 0.49, 0.4999999])

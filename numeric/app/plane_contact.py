@@ -49,7 +49,7 @@ class LineContact:
     shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there. Below the solver's smallest stick
     half-width (c < 1e-5, small mu: ``numeric.solutions.plane_law``) the values that depend on the neighbourhood of
     the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None; so
-    are the strip's where the stresses are not computed (1 - c < 1e-8 at gamma_bar < 1.7e-4), where the cylinder's
+    are the strip's where the stresses are not computed (1 - c < 1e-8 at gamma_bar < 3e-5), where the cylinder's
     half-width, which needs them, raises ValueError."""
 
     shape: str
@@ -167,7 +167,7 @@ def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: floa
     s = strip_punch(gamma=g, mu=mu, level=level)
     scale = P / a
     if isinstance(s.field, (FullSlipField, UnresolvedField)):  # p(0) and the slip are not resolved (c < 1e-5; or
-        # 1 - c < 1e-8 at gamma < 1.7e-4, ``numeric.solutions.plane_small_gamma``)
+        # 1 - c < 1e-8 at gamma < 3e-5, ``numeric.solutions.plane_small_gamma``)
         centre, slip = None, None
     else:
         centre, slip = scale * float(s.pressure(0.0)), sign * float(s.slip(1.0)) * P / pair.modulus

@@ -42,7 +42,7 @@ from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORD
                                             FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
                                             beyond_table_toward_full_stick, full_stick_friction, limit_resolved,
                                             solve_given_c, solve_given_mu, solve_limit)
-from numeric.solutions.solution import DeferredError, meets, warn_unmet
+from numeric.solutions.solution import Deferred, DeferredError, meets, warn_unmet
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
            "plane_largest_stick_width", "points", "ABOVE_C_MAX", "ROUNDING_ULPS", "RTOL_START"]
@@ -122,7 +122,8 @@ class StripPunchSolution:
         CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
         "full stick to within ..." (1 - c < 2^-40 at small gamma), "near full stick at small gamma ..." (gamma < 0.02,
-        1 - c < 1e-8: the solver with its stresses, or below gamma = 1.7e-4 the first-order law without them) or
+        1 - c < 1e-8: the solver with its stresses; where rtol is met by its bound the first-order law, the stresses
+        then a solve at c when first read; below gamma = 3e-5 the law without them) or
         "c = ... is c_max to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
@@ -148,20 +149,20 @@ class StripPunchSolution:
 
     def pressure(self, x: ArrayLike) -> np.ndarray | float:
         """p(x) = sigma_zz a / P (even)."""
-        return scalar_or_array(self._field.pressure_shear(points(x))[0])
+        return scalar_or_array(self.field.pressure_shear(points(x))[0])
 
     def shear(self, x: ArrayLike) -> np.ndarray | float:
         """q(x) = sigma_xz a / P on the half-plane, + outward (odd)."""
-        return scalar_or_array(self._field.pressure_shear(points(x))[1])
+        return scalar_or_array(self.field.pressure_shear(points(x))[1])
 
     def slip(self, x: ArrayLike) -> np.ndarray | float:
         """u(x) = u_x G / ((1 - nu) P): 0 on |x| <= c, inward (sign opposite to x) on the slip zones."""
-        return scalar_or_array(self._field.slip(points(x)))
+        return scalar_or_array(self.field.slip(points(x)))
 
     @property
     def field(self) -> object:
         """The stress field (``PlaneField`` for the solver, a closed form otherwise)."""
-        return self._field
+        return self._field.value() if isinstance(self._field, Deferred) else self._field
 
 
 #: The typical relative accuracy of mu at levels 0-4 (``numeric.solutions.plane_solver.PLANE_LEVELS``, measured up to
@@ -201,34 +202,45 @@ def _from_field(nu: float | None, fine: PlaneField, error: float | DeferredError
 def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, error: float | DeferredError,
               solved: PlaneField | None, level: int) -> StripPunchSolution:
     """Small gamma (< ``SMALL_GAMMA``) and 1 - c < ``SERIES_GAP_MIN``: ``solved`` the solver's field at gamma
-    itself (mu and c with its error), else (gamma < ``FIRST_ORDER_GAMMA``, or given mu where the solver's secant in c
-    did not converge) the first-order law; the stresses of the solve where there is one, else not computed (the law
-    gives mu and c only; below ``FIRST_ORDER_GAMMA`` the law is taken for speed, ``numeric.solutions.plane_solver``)."""
+    itself (mu and c with its error), else the first-order law (below ``FIRST_ORDER_GAMMA``, where rtol is met by its
+    bound, or given mu where the solver's secant in c did not converge); the stresses of the solve where there is one,
+    else from ``FIRST_ORDER_GAMMA`` up a given-c solve at c when first read (``Deferred``), below it not computed
+    (the law gives mu and c only)."""
     how = (f"solver level {level} at gamma itself" if solved is not None else
            f"the first-order law mu/gamma = K(c)/K'(c) (error {FIRST_ORDER_R_MAX:g} gamma^2 relative in mu)")
     route = f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}): mu and c from {how}"
     if solved is not None:
         return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; its stresses", solved.residual, solved)
+    if gamma >= FIRST_ORDER_GAMMA:
+        return StripPunchSolution(nu, gamma, mu, c, gap, error,
+                                  route + f"; the stresses of solver level {level} at c, formed when first read", 0.0,
+                                  Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
     reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} with 1 - c = {gap:.3g} < "
-              f"{SERIES_GAP_MIN:g}: mu and c are the first-order law's (below gamma = {FIRST_ORDER_GAMMA:g} a solve, "
-              "which would give them, costs 0.3 ... 1.7 s)")
+              f"{SERIES_GAP_MIN:g}: mu and c are the first-order law's (below gamma = {FIRST_ORDER_GAMMA:g} the "
+              "solver's are not measured to hold)")
     return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; stresses not computed", 0.0,
                               UnresolvedField(reason))
 
 
-def _near_one_given_c(nu: float | None, gamma: float, c: float, level: int) -> StripPunchSolution:
-    """Given c at gamma < SMALL_GAMMA and 1 - c < SERIES_GAP_MIN (``_near_one``)."""
+def _law_answers(gamma: float, rtol: float | None) -> bool:
+    """Whether the first-order law answers next to full stick at small gamma: below ``FIRST_ORDER_GAMMA``, or where
+    its bound ``FIRST_ORDER_R_MAX`` gamma^2 (relative, in mu) meets rtol."""
+    return gamma < FIRST_ORDER_GAMMA or (rtol is not None and FIRST_ORDER_R_MAX * gamma * gamma <= rtol)
+
+
+def _near_one_given_c(nu: float | None, gamma: float, c: float, level: int, law: bool) -> StripPunchSolution:
+    """Given c at gamma < SMALL_GAMMA and 1 - c < SERIES_GAP_MIN (``_near_one``); ``law``: ``_law_answers``."""
     gap = 1.0 - c
-    if gamma < FIRST_ORDER_GAMMA:
+    if law:
         mu = gamma / elliptic_ratio(c, gap)
         return _near_one(nu, gamma, mu, c, gap, FIRST_ORDER_R_MAX * gamma * gamma * mu, None, level)
     solve = solve_given_c(c, gap, gamma, level)
     return _near_one(nu, gamma, solve.field.mu, c, gap, solve.error, solve.field, level)
 
 
-def _near_one_given_mu(nu: float | None, gamma: float, mu: float, level: int) -> StripPunchSolution:
+def _near_one_given_mu(nu: float | None, gamma: float, mu: float, level: int, law: bool) -> StripPunchSolution:
     """Given mu at gamma < SMALL_GAMMA where the first-order law puts 1 - c below SERIES_GAP_MIN (``_near_one``)."""
-    if gamma >= FIRST_ORDER_GAMMA:
+    if not law:
         try:
             solve = solve_given_mu(mu, gamma, level)
             return _near_one(nu, gamma, mu, solve.field.c, solve.field.gap, solve.error, solve.field, level)
@@ -260,14 +272,15 @@ def _below_solver(mu: float, gamma: float, level: int) -> bool:
     return first_order < C_SMALLEST or mu < law_friction_coefficient(C_SMALLEST, gamma, level)[0]
 
 
-def _full_stick(mu: float, gamma: float, level: int) -> bool:
+def _full_stick(mu: float, gamma: float, level: int, law: bool) -> bool:
     """Whether 1 - c < FULL_STICK_GAP for mu: only where c_max lies above 1 - FULL_STICK_GAP (``limit_resolved``
     false), for mu gamma beyond LIMIT_MU_GAMMA[1] (1 - c within 1.4e-6 (1 - c_max) of 1 - c_max) or mu beyond the
-    guess table toward full stick and at least the friction at 1 - c = FULL_STICK_GAP."""
+    guess table toward full stick and at least the friction at 1 - c = FULL_STICK_GAP (the first-order law's where
+    ``law``, ``_law_answers``)."""
     if limit_resolved(gamma):
         return False
     return mu * gamma > LIMIT_MU_GAMMA[1] or (beyond_table_toward_full_stick(mu, gamma)
-                                              and mu >= full_stick_friction(gamma, level))
+                                              and mu >= full_stick_friction(gamma, level, law))
 
 
 def _from_law(nu: float | None, gamma: float, mu: float, c: float, error: float) -> StripPunchSolution:
@@ -288,7 +301,10 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
 
     ``rtol`` (instead of ``level``): the coarsest level whose typical accuracy meets it (``RTOL_START``), then finer
     ones while ``error`` exceeds rtol times mu (given c) or c (given mu); if none does (the estimate's floor is 1e-10
-    relative), the most accurate result with an ``AccuracyWarning``. Reading ``error`` costs a second solve.
+    relative), the most accurate result with an ``AccuracyWarning``. Reading ``error`` costs a second solve. Next to
+    full stick at small gamma (1 - c < 1e-8, gamma < 0.02), where a solve costs 0.3 ... 2 s, the first-order law
+    answers at once wherever its bound, 60 gamma^2 relative in mu, meets rtol (the stresses then a solve at c, formed
+    when first read); without rtol the solver does, from gamma = 3e-5 up (``FIRST_ORDER_GAMMA``).
 
     Examples
     --------
@@ -301,10 +317,16 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
             raise ValueError("give level or rtol, not both (rtol chooses the level)")
         rtol = check_rtol(rtol)
         value = (lambda s: s.mu) if c is not None else (lambda s: s.c)
-        return _meeting(rtol, lambda lv: strip_punch(nu=nu, gamma=gamma, mu=mu, c=c, level=lv), value)
+        return _meeting(rtol, lambda lv: _strip_punch(nu, gamma, mu, c, lv, rtol), value)
+    return _strip_punch(nu, gamma, mu, c, DEFAULT_LEVEL if level is None else check_level(level), None)
+
+
+def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: float | None, level: int,
+                 rtol: float | None) -> StripPunchSolution:
+    """``strip_punch`` at ``level``; ``rtol`` (the caller's, or None) only decides whether the first-order law answers
+    next to full stick at small gamma (``_law_answers``)."""
     nu = None if nu is None else real_number(check_nu(nu), "nu")
     g = resolve_gamma(nu, gamma)
-    level = DEFAULT_LEVEL if level is None else check_level(level)
     if (mu is None) == (c is None):
         raise ValueError("give exactly one of mu (friction coefficient) or c (stick half-width / a)")
     if c is not None:
@@ -326,7 +348,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
         if g < SMALL_GAMMA and 1.0 - c < SERIES_GAP_MIN:
-            return _near_one_given_c(nu, g, c, level)
+            return _near_one_given_c(nu, g, c, level, _law_answers(g, rtol))
         solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
@@ -337,9 +359,10 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     if _below_solver(mu, g, level):
         c, error = law_stick_width(mu, g, level)
         return _from_law(nu, g, mu, c, error)
-    if _full_stick(mu, g, level):
-        how = f"solver level {level}" if g >= FIRST_ORDER_GAMMA else "the first-order law"
-        route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level):.10g}, the friction "
+    law = _law_answers(g, rtol)
+    if _full_stick(mu, g, level, law):
+        how = "the first-order law" if law else f"solver level {level}"
+        route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level, law):.10g}, the friction "
                  f"at 1 - c = {FULL_STICK_GAP:.2g} ({how}); c = 1 - {FULL_STICK_GAP / 2:.2g} +- "
                  f"{FULL_STICK_GAP / 2:.2g}, stresses of the bonded punch (Abramov), no slip")
         return StripPunchSolution(nu, g, mu, 1.0 - 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP,
@@ -352,7 +375,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
     if g < SMALL_GAMMA and float(slip_width_first_order(mu, g)) < SERIES_GAP_MIN:
-        return _near_one_given_mu(nu, g, mu, level)
+        return _near_one_given_mu(nu, g, mu, level, law)
     solve = solve_given_mu(mu, g, level)
     return _from_field(nu, solve.field, solve.error, level, mu)
 

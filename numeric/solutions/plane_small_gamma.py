@@ -22,17 +22,18 @@ the series' p and q/gamma were 2e-9 and 8e-9 off level 4 at x = c, the solver's 
 1e-12 at 1e-8), and the series serves the law and the tests as an independent route.
 
 Next to c = 1 (1 - c < ``SERIES_GAP_MIN``) at gamma < ``SMALL_GAMMA`` the routes (``numeric.solutions.plane_punch``)
-take the first-order law below ``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` (for speed: a solve there costs
-0.3 ... 1.7 s, the law nothing; its docstring) and give mu and c only (``UnresolvedField``); above it, the solver at
-gamma itself with its stresses. Measured with the system as it is now (balanced below alpha = 1/4, the stick pressure
+take the solver at gamma itself with its stresses (a solve costs 0.3 ... 2 s there), or the first-order law: below
+``numeric.solutions.plane_solver.FIRST_ORDER_GAMMA`` (3e-5; its docstring), with mu and c only (``UnresolvedField``),
+and wherever the caller's rtol is met by its bound, with the stresses of a solve at c formed when first read
+(``numeric.solutions.solution.Deferred``). Measured with the system as it is now (balanced below alpha = 1/4, the stick pressure
 pinned from alpha = 0.04), levels 2 and 3 against level 4 at gamma = 1.7e-4, 3e-4, 5e-4, 1e-3 and 1 - c = 1e-9,
 1e-10, 1e-12, 1e-14 (16 cases; x = 0, 0.3, 0.6, 0.9, 0.99, 1 - 1e-6, next to c on either side, c, and three points
 across the slip zones): mu within 4.5e-12, q within 5.9e-12 of max(1, |p|) (6e-11 of its own largest value), the slip
 within 1e-8 of its own value (which is 1e-10 ... 1e-30: the zones are 1e-9 ... 1e-14 wide), p within 1.0e-9 of max(1,
 |p|) inside the slip zones, where p ~ (1 - x)^(alpha - 1/2) is largest (level 2: 8.7e-10), and 1.5e-13 elsewhere; at
-gamma = 3e-5, 5e-5, 1e-4, 1.5e-4 (below FIRST_ORDER_GAMMA, where the route takes the law; 1 - c down to 1e-16 for mu,
-1e-14 for the stresses, 20 cases) the solver's mu within 3.1e-11, p within 8.6e-10 and q within 9.4e-13 of max(1,
-|p|). (The first measurement, before the pins and the balance's present form, had q/gamma up to 7e-8 and mu 1e-8 off at
+gamma = 3e-5, 5e-5, 1e-4, 1.5e-4 (where the route took the law until the rtol route could choose it; 1 - c down to
+1e-16 for mu, 1e-14 for the stresses, 20 cases) the solver's mu within 3.1e-11, p within 8.6e-10 and q within 9.4e-13
+of max(1, |p|). (The first measurement, before the pins and the balance's present form, had q/gamma up to 7e-8 and mu 1e-8 off at
 gamma = 2e-4 ... 5e-4, and the stresses were not given below gamma = 1e-3.)
 
 References

@@ -24,8 +24,9 @@ d theta / d logit c (``numeric.core.eigenvalue.guided_steps``, the axisymmetric 
 being good to ~1e-9); elsewhere the secant method in logit(c) at theta = atan(mu gamma) from the first-order law's c
 (kept below the largest stick width). mu -> inf: the limit problem theta = pi/2, whose root is the largest stick
 width c_max, solved where 1 - c_max >= 2^-40 (``limit_resolved``; below, the callers take 1 - c_max from the limit
-problem's small-gamma form, ``numeric.core.plane_guess.gap_max``). Toward gamma = 0 the first-order law's error,
-at most ``FIRST_ORDER_R_MAX`` gamma^2 relative, falls below the given-c solve's rounding (``FIRST_ORDER_GAMMA``).
+problem's small-gamma form, ``numeric.core.plane_guess.gap_max``). Next to c = 1 toward gamma = 0 the first-order
+law, to ``FIRST_ORDER_R_MAX`` gamma^2 relative, answers below ``FIRST_ORDER_GAMMA`` (the solver's mu is not measured to
+hold there) and, from the callers, wherever that bound meets the caller's rtol.
 
 References
 ----------
@@ -265,28 +266,28 @@ FULL_STICK_GAP = 2.0**-40
 #: c = 0.5; it changes by 3000 gamma^2 at 1 - c = 2.2e-16), so the first-order law's relative error in mu is at most
 #: FIRST_ORDER_R_MAX gamma^2.
 FIRST_ORDER_R_MAX = 60.0
-#: Below this gamma the first-order law's mu (error FIRST_ORDER_R_MAX gamma^2, relative: 1.7e-6 here) is taken next to
-#: c = 1: there a solve costs 0.3 ... 1.7 s (1400-2000 unknowns; given mu with the full-stick threshold), the law
-#: nothing. Not for the solver's accuracy: measured with the system as it is now (balanced below alpha = 1/4, the stick
-#: pressure pinned from alpha = 0.04), at gamma = 3e-5, 5e-5, 1e-4, 1.5e-4 and 1 - c = 1e-9, 1e-10, 1e-12, 1e-14,
-#: 1e-16 levels 2 and 3 lie within 3.1e-11 of level 4 in mu, and r = (mu/mu_1 - 1)/gamma^2 of levels 2 and 3 within
-#: 1e-2 of its value at larger gamma (30.3124 at 1 - c = 1e-12: mu within ~1e-12; at gamma = 1e-5 level 4 loses it, r
-#: 33.6 against 30.33). (A measurement on the earlier balanced system, r of levels 1-3 against 30.31, had the solver's
-#: mu 2.7e-9, 3.5e-8, 2.3e-7 and 6.4e-7 off at gamma = 3e-4, 1e-4, 3e-5, 1e-5; it no longer holds.) The solver would be
-#: the better default down to 3e-5 once the rtol route can still take the law where its bound meets rtol.
-FIRST_ORDER_GAMMA = 1.7e-4
+#: Below this gamma the first-order law's mu (error FIRST_ORDER_R_MAX gamma^2, relative: 5.4e-8 here) is taken next to
+#: c = 1, whatever the level or rtol: the solver's mu there is not measured to hold. Measured with the system as it is
+#: now (balanced below alpha = 1/4, the stick pressure pinned from alpha = 0.04), at gamma = 3e-5, 5e-5, 1e-4, 1.5e-4
+#: and 1 - c = 1e-9, 1e-10, 1e-12, 1e-14, 1e-16 levels 2 and 3 lie within 3.1e-11 of level 4 in mu, and r = (mu/mu_1 -
+#: 1)/gamma^2 of levels 2 and 3 within 1e-2 of its value at larger gamma (30.3124 at 1 - c = 1e-12: mu within ~1e-12);
+#: at gamma = 1e-5 level 4 loses it (r 33.6 against 30.33). From here up the solver answers (0.3 ... 0.6 s given c,
+#: 1 ... 2 s given mu: 1400-2000 unknowns), unless rtol is met by the law's bound (``numeric.solutions.plane_punch``).
+#: (Until the rtol route could choose the law this limit stood at 1.7e-4, for speed; a measurement on the earlier
+#: balanced system, r of levels 1-3 against 30.31, had the solver's mu 2.7e-9 ... 6.4e-7 off at gamma = 3e-4 ... 1e-5.)
+FIRST_ORDER_GAMMA = 3e-5
 
 
 @lru_cache(maxsize=64)
-def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL) -> float:
-    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level; below
+def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL, law: bool = False) -> float:
+    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level; with ``law`` or below
     ``FIRST_ORDER_GAMMA`` the first-order law, to 60 gamma^2 relative): from there on the stick zone fills the contact
     to within 9.1e-13. Only where c_max lies above 1 - ``FULL_STICK_GAP`` (the limit is not resolved,
     ``limit_resolved``; else ValueError: no friction reaches it)."""
     if not 0.0 < gamma or limit_resolved(gamma):
         raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined only where 1 - c_max < "
                          f"{FULL_STICK_GAP:.3g} (gamma below ~0.157)")
-    if gamma < FIRST_ORDER_GAMMA:
+    if law or gamma < FIRST_ORDER_GAMMA:
         return gamma / elliptic_ratio(1.0 - FULL_STICK_GAP, FULL_STICK_GAP)
     return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
 

@@ -26,7 +26,7 @@ from numpy.typing import ArrayLike
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_x
 
-__all__ = ["AccuracyWarning", "DeferredError", "StressField", "FlatPunchSolution", "Offer", "first_meeting", "meets",
+__all__ = ["AccuracyWarning", "Deferred", "DeferredError", "StressField", "FlatPunchSolution", "Offer", "first_meeting", "meets",
            "warn_unmet"]
 
 
@@ -34,24 +34,20 @@ class AccuracyWarning(UserWarning):
     """The requested ``rtol`` could not be met; the most accurate result available was returned."""
 
 
-class DeferredError:
-    """An error estimate formed on first use.
-
-    The solver's estimate is a second solve one polynomial degree lower (``numeric.solutions.solver``), as
-    costly as the solution itself: a caller who reads neither ``error`` nor asks for ``rtol`` does not pay
-    for it. The value, once formed, is kept.
-    """
+class Deferred:
+    """A value formed on first use (``value()``) and kept; pickled (to another process) with it, formed then: the
+    computation behind it does not travel."""
 
     __slots__ = ("_compute", "_value")
 
-    def __init__(self, compute: Callable[[], float]) -> None:
-        self._compute: Callable[[], float] | None = compute
-        self._value: float | None = None
+    def __init__(self, compute: Callable[[], object]) -> None:
+        self._compute: Callable[[], object] | None = compute
+        self._value: object | None = None
 
-    def value(self) -> float:
+    def value(self) -> object:
         if self._value is None:
             assert self._compute is not None
-            self._value = float(self._compute())
+            self._value = self._compute()
             self._compute = None
         return self._value
 
@@ -59,14 +55,30 @@ class DeferredError:
         return "<formed on first use>" if self._value is None else repr(self._value)
 
     def __reduce__(self):
-        """Pickled (to another process) with its value, formed now: the solve behind it does not travel."""
-        return (_known_error, (self.value(),))
+        return (_known, (type(self), self.value()))
 
 
-def _known_error(value: float) -> DeferredError:
-    known = DeferredError(lambda: value)
+def _known(kind: type, value: object) -> Deferred:
+    known = kind(lambda: value)
     known.value()
     return known
+
+
+class DeferredError(Deferred):
+    """An error estimate formed on first use.
+
+    The solver's estimate is a second solve one polynomial degree lower (``numeric.solutions.solver``), as
+    costly as the solution itself: a caller who reads neither ``error`` nor asks for ``rtol`` does not pay
+    for it. The value, once formed, is kept.
+    """
+
+    __slots__ = ()
+
+    def __init__(self, compute: Callable[[], float]) -> None:
+        super().__init__(lambda: float(compute()))
+
+    def value(self) -> float:
+        return super().value()
 
 
 class StressField(Protocol):

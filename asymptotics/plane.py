@@ -47,7 +47,7 @@ from .arrays import scalar_or_array
 from .materials import check_c, check_gamma, check_mu, check_nu, check_x
 
 __all__ = ["gamma_plane_stress", "bonded_index", "mu_over_gamma_plane", "mu_over_gamma_plane_mp",
-           "stick_width_first_order", "slip_width_first_order",
+           "friction_slope_first_order", "stick_width_first_order", "slip_width_first_order",
            "stick_width_first_order_mp", "c_small_mu_plane", "gap_large_mu_plane",
            "pressure_sadowsky", "pressure_full_slip", "pressure_hertz_cylinder", "hertz_cylinder_load", "bonded_traction", "EXACT_RELATION"]
 
@@ -117,6 +117,18 @@ def mu_over_gamma_plane_mp(c, dps: int = 30):
     with mpmath.workdps(dps):
         c = mpmath.mpf(c)
         return mpmath.ellipk(c * c) / mpmath.ellipk(1 - c * c)
+
+
+def friction_slope_first_order(c: float, gap: float, gamma: float) -> float:
+    """d mu / d logit c of the first-order law mu = gamma K(c)/K'(c) at c = 1 - gap: gamma pi / (2 (1 + c) K'(c)^2)
+    (Legendre's relation gives d(K/K')/dc = pi / (2 c k'^2 K'^2), k'^2 = 1 - c^2 = gap (1 + c), and d c / d logit c =
+    c gap); K'(c) through ``ellipkm1`` (m = 1 - c^2 = 1 - (1 - gap)^2 is not formed).
+
+    >>> round(friction_slope_first_order(0.5, 0.5, 1.0), 12)   # pi / (3 K(m = 3/4)^2)
+    0.225176669092
+    """
+    k_prime = float(special.ellipkm1(c * c))  # K(m = 1 - c^2)
+    return gamma * math.pi / (2.0 * (1.0 + c) * k_prime * k_prime)
 
 
 def _modulus_of_nome(log_nome: np.ndarray) -> np.ndarray:

@@ -150,6 +150,16 @@ def test_first_order_law_steps_and_inverse():
         mu = 0.4 * float(closed.mu_over_gamma_plane(cv))
         assert closed.stick_width_first_order(mu, 0.4) == pytest.approx(cv, rel=1e-13)  # the theta-function inverse
     assert closed.c_small_mu_plane(0.02, 0.5) == pytest.approx(closed.stick_width_first_order(0.02, 0.5), rel=1e-15)
+    # the law's d mu / d logit c against mpmath's derivative of K/K' (50 digits) in logit c: measured within 2.3e-16;
+    # bound 1e-14 (ellipkm1 is good to a few ulp, and 1 - c = gap is passed exactly)
+    with mpmath.workdps(50):
+        def law(xi):
+            k = 1 / (1 + mpmath.exp(-xi))
+            return mpmath.ellipk(k * k) / mpmath.ellipk(1 - k * k)
+        for cv, gap in ((1e-3, 1 - 1e-3), (0.5, 0.5), (1 - 2.0**-30, 2.0**-30)):
+            xi = mpmath.log(mpmath.mpf(cv) / mpmath.mpf(gap))
+            assert closed.friction_slope_first_order(cv, gap, 0.3) == pytest.approx(0.3 * float(mpmath.diff(law, xi)),
+                                                                                    rel=1e-14)
     assert 1 - closed.stick_width_first_order(4.0, 0.5) == pytest.approx(closed.gap_large_mu_plane(4.0, 0.5), rel=1e-10)
 
 

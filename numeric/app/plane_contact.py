@@ -31,7 +31,6 @@ from numeric.app.contact import Elastic, MaterialPair, json_ready, positive
 from numeric.core.plane_fields import FieldCombination
 from numeric.solutions.plane_law import FullSlipField
 from numeric.solutions.plane_power_law import plane_power_law
-from numeric.solutions.plane_small_gamma import UnresolvedField
 from numeric.solutions.plane_punch import strip_punch
 from numeric.solutions.plane_solver import DEFAULT_LEVEL
 
@@ -48,9 +47,7 @@ class LineContact:
     inside the slip zones (``PlanePowerLawSolution.slip``). The strip's pressure and
     shear are infinite at its edges: ``max_pressure`` and ``max_shear`` are inf there. Below the solver's smallest stick
     half-width (c < 1e-5, small mu: ``numeric.solutions.plane_law``) the values that depend on the neighbourhood of
-    the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None; so
-    are the strip's where the stresses are not computed (1 - c < 1e-8 at gamma_bar < 3e-5), where the cylinder's
-    half-width, which needs them, raises ValueError."""
+    the stick zone (the cylinder's maxima and centre pressure, the strip's centre pressure) and the slip are None."""
 
     shape: str
     size: float
@@ -124,8 +121,6 @@ def press_cylinder(radius: float, half_space: Elastic, *, mu: float, load: float
     P = positive(load, "load", "load per unit length, N/m")
     pair, g, sign = _pair(half_space, indenter)
     h = plane_power_law(2, gamma=g, mu=mu, level=level)
-    if isinstance(h.flat.field, UnresolvedField):  # the load-width relation needs the pressure
-        raise ValueError(f"{h.flat.field.reason}; the cylinder's half-width needs them (route: {h.flat.route})")
     M = pair.modulus
     a = _half_width(h.load_factor, R, P, M)
     a_h = _half_width(2.0 / math.pi, R, P, M)
@@ -166,8 +161,7 @@ def press_strip(half_width: float, half_space: Elastic, *, mu: float, load: floa
     pair, g, sign = _pair(half_space, indenter)
     s = strip_punch(gamma=g, mu=mu, level=level)
     scale = P / a
-    if isinstance(s.field, (FullSlipField, UnresolvedField)):  # p(0) and the slip are not resolved (c < 1e-5; or
-        # 1 - c < 1e-8 at gamma < 3e-5, ``numeric.solutions.plane_small_gamma``)
+    if isinstance(s.field, FullSlipField):  # p(0) and the slip are not resolved (c < 1e-5)
         centre, slip = None, None
     else:
         centre, slip = scale * float(s.pressure(0.0)), sign * float(s.slip(1.0)) * P / pair.modulus

@@ -28,15 +28,15 @@ from numpy.typing import ArrayLike
 
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_c, check_gamma, check_mu, check_nu, real_number, resolve_gamma
-from asymptotics.plane import bonded_traction, pressure_sadowsky, slip_width_first_order, stick_width_first_order
+from asymptotics.plane import (bonded_traction, friction_slope_first_order, pressure_sadowsky, slip_width_first_order,
+                               stick_width_first_order)
 
 from numeric.core.errors import NoEigenvalueError, SolverError
 from numeric.core.plane_fields import PlaneField
 from numeric.core.plane_guess import elliptic_ratio, gap_max, gap_max_relative_error
 from numeric.solutions.plane_law import FullSlipField, law_friction_coefficient, law_stick_width
 from numeric.solutions.plane_near_limit import near_limit_field
-from numeric.solutions.plane_small_gamma import (SERIES_GAP_MIN, SMALL_GAMMA, UnresolvedField,
-                                                 friction_slope)
+from numeric.solutions.plane_small_gamma import SERIES_GAP_MIN, SMALL_GAMMA
 from numeric.solutions.flat_punch import check_level, check_rtol
 from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORDER_GAMMA, FIRST_ORDER_R_MAX,
                                             FULL_STICK_GAP, LIMIT_MU_GAMMA, PLANE_LEVELS, ROUNDING_FLOOR,
@@ -122,8 +122,8 @@ class StripPunchSolution:
         CONDITION_LIMIT``), "limit mu -> inf ...",
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
         "full stick to within ..." (1 - c < 2^-40 at small gamma), "near full stick at small gamma ..." (gamma < 0.02,
-        1 - c < 1e-8: the solver with its stresses; where rtol is met by its bound the first-order law, the stresses
-        then a solve at c when first read; below gamma = 3e-5 the law without them) or
+        1 - c < 1e-8: the solver with its stresses, or below gamma = 3e-5 and where rtol is met by its bound the
+        first-order law, the stresses then a solve at c when first read) or
         "c = ... is c_max to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
@@ -204,22 +204,16 @@ def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, e
     """Small gamma (< ``SMALL_GAMMA``) and 1 - c < ``SERIES_GAP_MIN``: ``solved`` the solver's field at gamma
     itself (mu and c with its error), else the first-order law (below ``FIRST_ORDER_GAMMA``, where rtol is met by its
     bound, or given mu where the solver's secant in c did not converge); the stresses of the solve where there is one,
-    else from ``FIRST_ORDER_GAMMA`` up a given-c solve at c when first read (``Deferred``), below it not computed
-    (the law gives mu and c only)."""
+    else of a given-c solve at c formed when first read (``Deferred``): the solver's stresses hold where its mu does not
+    (``numeric.solutions.plane_small_gamma``)."""
     how = (f"solver level {level} at gamma itself" if solved is not None else
            f"the first-order law mu/gamma = K(c)/K'(c) (error {FIRST_ORDER_R_MAX:g} gamma^2 relative in mu)")
     route = f"near full stick at small gamma (1 - c < {SERIES_GAP_MIN:g}, gamma < {SMALL_GAMMA:g}): mu and c from {how}"
     if solved is not None:
         return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; its stresses", solved.residual, solved)
-    if gamma >= FIRST_ORDER_GAMMA:
-        return StripPunchSolution(nu, gamma, mu, c, gap, error,
-                                  route + f"; the stresses of solver level {level} at c, formed when first read", 0.0,
-                                  Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
-    reason = (f"the stresses and the slip are not computed at gamma = {gamma:.3g} with 1 - c = {gap:.3g} < "
-              f"{SERIES_GAP_MIN:g}: mu and c are the first-order law's (below gamma = {FIRST_ORDER_GAMMA:g} the "
-              "solver's are not measured to hold)")
-    return StripPunchSolution(nu, gamma, mu, c, gap, error, route + "; stresses not computed", 0.0,
-                              UnresolvedField(reason))
+    return StripPunchSolution(nu, gamma, mu, c, gap, error,
+                              route + f"; the stresses of solver level {level} at c, formed when first read", 0.0,
+                              Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
 
 
 def _law_answers(gamma: float, rtol: float | None) -> bool:
@@ -247,7 +241,7 @@ def _near_one_given_mu(nu: float | None, gamma: float, mu: float, level: int, la
         except SolverError:  # the secant in c near c = 1 at small gamma (gamma = 2e-4, 1 - c = 5e-10): the law below
             pass
     c, gap = float(stick_width_first_order(mu, gamma)), float(slip_width_first_order(mu, gamma))
-    error = c * gap * FIRST_ORDER_R_MAX * gamma * gamma * mu / friction_slope(c, gap, gamma)
+    error = c * gap * FIRST_ORDER_R_MAX * gamma * gamma * mu / friction_slope_first_order(c, gap, gamma)
     return _near_one(nu, gamma, mu, c, gap, error, None, level)
 
 
@@ -304,7 +298,7 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     relative), the most accurate result with an ``AccuracyWarning``. Reading ``error`` costs a second solve. Next to
     full stick at small gamma (1 - c < 1e-8, gamma < 0.02), where a solve costs 0.3 ... 2 s, the first-order law
     answers at once wherever its bound, 60 gamma^2 relative in mu, meets rtol (the stresses then a solve at c, formed
-    when first read); without rtol the solver does, from gamma = 3e-5 up (``FIRST_ORDER_GAMMA``).
+    when first read); without rtol the solver does, from gamma = 3e-5 up (``FIRST_ORDER_GAMMA``; below, the law).
 
     Examples
     --------

@@ -242,3 +242,35 @@ def test_differenced_upper_rows_are_formed_without_cancellation():
                     exact = mpmath.quad(lambda s: basis(j, s) * jacobian(s) * (
                         1 / (2 * mpmath.sqrt(u_of(s) - v)) - 1 / (2 * mpmath.sqrt(u_of(s) - v0))), [0, 1])
                     assert abs(block[j] - float(exact)) <= 1e-13 * np.max(np.abs(block)), (e, i, j, block[j], exact)
+
+
+@pytest.mark.parametrize("c, level", [(1e-3, 2), (0.5, 0), (0.5, 2), (0.97, 4)])
+def test_the_system_is_assembled_from_the_fixed_integrals_and_the_varying_columns(c, level):
+    # ``collocation_system`` reads the integrals that do not depend on alpha where they lie (``AbelOperators.fixed``)
+    # and puts the assembled columns that do (``varying``) in their places, instead of assembling a copy of the whole
+    # integrals (``matrices``). That is exact if the fixed integrals are 0 in the varying columns, ``matrices`` is the
+    # two together, and every column of the system depends on its own basis column only, the same at every alpha
+    # outside the varying ones: checked to the last bit (no tolerance: the same operations on the same numbers)
+    from numeric.core.charts import RESOLUTIONS
+    from numeric.core.operators import collocation_system
+    ops = AbelOperators(layout(c, 1.0 - c, RESOLUTIONS[level]))
+    fixed = ops.fixed
+    ns = ops.layout.n_stick
+    systems = {}
+    for alpha in (0.3, 0.4):  # both above AXISYMMETRIC_PIN_FROM: the same rows pinned
+        varying = ops.varying(alpha)
+        whole = ops.matrices(alpha)
+        outside = np.setdiff1d(np.arange(int(ops.layout.starts[-1])), varying.columns)
+        for name in ("upper", "lower", "upper/x", "lower/x", "change", "integral", "integral/x"):
+            assert not np.any(fixed.of(name)[..., varying.columns])
+            assert np.array_equal(whole.of(name)[..., varying.columns], varying.matrices.of(name))
+            assert np.array_equal(whole.of(name)[..., outside], fixed.of(name)[..., outside])
+        systems[alpha] = collocation_system(ops, 0.4, alpha)
+    cs, cl = varying.columns[varying.columns < ns], varying.columns[varying.columns >= ns] - ns
+    keep_stick = np.setdiff1d(np.arange(2 * ns), np.concatenate([cs, ns + cs]))
+    keep_slip = np.setdiff1d(np.arange(ops.x.size - ns), cl)
+    a, b = systems[0.3], systems[0.4]
+    assert np.array_equal(a.stick[:, keep_stick], b.stick[:, keep_stick])
+    assert np.array_equal(a.normal[:, keep_slip], b.normal[:, keep_slip])
+    assert np.array_equal(a.shear[:, keep_slip], b.shear[:, keep_slip])
+    assert not np.array_equal(a.normal[:, cl], b.normal[:, cl])

@@ -47,7 +47,7 @@ from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STIC
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
-__all__ = ["AbelMatrices", "AbelOperators", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
+__all__ = ["AbelMatrices", "AbelOperators", "VaryingColumns", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
            "partner_near_rule", "projected_outside_legendre", "self_legendre_block", "stick_end_rows"]
 
 EXTRA_NODES = 6
@@ -435,22 +435,37 @@ class AbelOperators:
             out["integral/x"] = [_Term(None, (wi / np.sqrt(u_o))[None, :], So, Po, True)]
         return out
 
-    def matrices(self, alpha: float, displacement: bool = False) -> AbelMatrices:
-        """The Abel integrals at basis exponent alpha; ``displacement`` uses the families of u* (``family_factors``)."""
+    @property
+    def fixed(self) -> AbelMatrices:
+        """The integrals that do not depend on alpha, with the columns that do (``varying``) 0: read-only views of the
+        arrays every alpha shares."""
+        return _abel_matrices({key: _read_only(value) for key, value in self._fixed.items()}, self.x.size)
+
+    def varying(self, alpha: float, displacement: bool = False) -> VaryingColumns:
+        """The columns that depend on basis exponent alpha (``displacement``: the families of u*, ``family_factors``):
+        the singular families of the elements at c (with displacement their whole columns) and the edge element's."""
         lay = self.layout
-        out = {key: value.copy() for key, value in self._fixed.items()}
+        ranges = {}
+        for e in self._terms:
+            start, head = int(lay.starts[e]), int(lay.degree[e]) + 1
+            only_singular = int(lay.kind[e]) != EDGE and not displacement  # the regular family is in the fixed part
+            ranges[e] = (start + head if only_singular else start, int(lay.starts[e + 1]), only_singular)
+        columns = np.concatenate([np.arange(lo, hi) for lo, hi, _ in ranges.values()]) if ranges else np.zeros(0, int)
+        k = columns.size
+        out = {key: np.zeros((self.x.size, k) if value.ndim == 2 else k) for key, value in self._fixed.items()}
         # the family factors at every node of a family (the two ends share theirs), one call each
         values = {family: family_factors(family, flat, alpha, displacement, self._logs[family])
                   for family, (flat, _) in self._nodes.items()}
         bases: dict = {}  # tabulated and projected bases per (family, node set, columns)
+        first = 0
         for e, blocks in self._terms.items():
             kind, sdeg = int(lay.kind[e]), int(lay.singular_degree[e])
             family = _family(kind)
             flat_regular, flat_singular = values[family]
             where = self._nodes[family][1]
-            start, head = int(lay.starts[e]), int(lay.degree[e]) + 1
-            only_singular = kind != EDGE and not displacement  # the regular family is in the fixed part
-            cols = slice(start + head, int(lay.starts[e + 1])) if only_singular else slice(start, int(lay.starts[e + 1]))
+            lo, hi, only_singular = ranges[e]
+            cols = slice(first, first + hi - lo)
+            first += hi - lo
 
             def block_of(t: _Term) -> np.ndarray:
                 part = where[id(t.S)]
@@ -489,10 +504,40 @@ class AbelOperators:
                 out[CHANGE][:, cols] = upper - upper[REFERENCE]
                 for t in blocks.get(CHANGE, ()):
                     out[CHANGE][t.rows, cols] = block_of(t)
-        empty = np.zeros((self.x.size, 0))
-        return AbelMatrices(out.get("upper", empty), out.get("lower", empty), out.get("upper/x", empty),
-                            out.get("lower/x", empty), out["integral"], out.get("integral/x", np.zeros(0)),
-                            out.get(CHANGE, empty))
+        columns.setflags(write=False)
+        return VaryingColumns(columns, _abel_matrices(out, self.x.size))
+
+    def matrices(self, alpha: float, displacement: bool = False) -> AbelMatrices:
+        """The Abel integrals at basis exponent alpha (``displacement``: the families of u*): the fixed ones with the
+        ``varying`` columns set."""
+        varying = self.varying(alpha, displacement)
+        out = {key: value.copy() for key, value in self._fixed.items()}
+        for key, value in out.items():
+            value[..., varying.columns] = varying.matrices.of(key)
+        return _abel_matrices(out, self.x.size)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class VaryingColumns:
+    """The columns of the Abel integrals that depend on the basis exponent (``AbelOperators.varying``): their basis
+    indices (increasing: the stick zone's first) and their integrals, an ``AbelMatrices`` of those columns only."""
+
+    columns: np.ndarray
+    matrices: AbelMatrices
+
+
+def _read_only(a: np.ndarray) -> np.ndarray:
+    view = a.view()
+    view.setflags(write=False)
+    return view
+
+
+def _abel_matrices(out: dict[str, np.ndarray], n_points: int) -> AbelMatrices:
+    """``AbelMatrices`` of the arrays by name; empty where a name was not formed."""
+    empty = np.zeros((n_points, 0))
+    return AbelMatrices(out.get("upper", empty), out.get("lower", empty), out.get("upper/x", empty),
+                        out.get("lower/x", empty), out["integral"], out.get("integral/x", np.zeros(0)),
+                        out.get(CHANGE, empty))
 
 
 def _family(kind: int) -> int:
@@ -614,38 +659,35 @@ def stick_end_rows(lay: Layout) -> tuple[np.ndarray, np.ndarray]:
 
 
 def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> CollocationSystem:
-    """Assemble [S75] (2.2a) at every point and (2.2b) at the stick points for basis exponent alpha."""
+    """Assemble [S75] (2.2a) at every point and (2.2b) at the stick points for basis exponent alpha: the blocks of the
+    integrals that do not depend on alpha (``AbelOperators.fixed``, read where they lie), then those of the columns
+    that do (``AbelOperators.varying``) put in their places. Every column of a block depends only on the same basis
+    column, so this is the assembly of the whole integrals (``AbelOperators.matrices``) to the last bit (checked over
+    1485 systems: levels 0-4, c from 1e-5 to 1 - 1e-9, alpha from 0 to 1/2), without their copy: measured at level 2,
+    the copy took 0.34 ms at c = 1/2 (136 points), and without it the page faults of a full solution for given c (the
+    heap's top, freed and given back between solves, faulted in again) fell from 185 ... 290 to 0 at c = 1/2, 0.9 and
+    from 925 to 261 at c = 0.1; the full solution's median over the benchmark's six cases from 4.75 to 4.39 ms (six
+    alternating pairs of processes)."""
     lay = ops.layout
     x = ops.x
-    M = ops.matrices(alpha)
     ns = lay.n_stick
     N = x.size
     nl = N - ns
     n = 2 * ns + nl
-    xs, xl = x[:ns], x[ns:]
-    # (2.2a) at the reference point, and at every other point less its value at the reference (``REFERENCE``): w* = 1
-    # there and 0 here. The upper integrals' differences are formed without cancellation (``AbelMatrices.change``):
-    # far from an element the kernel 1/sqrt(t^2 - x^2) barely changes from point to point, so the rows themselves hold
-    # the solution only through differences of their rounding (the componentwise condition of theta grew like 1/c,
-    # 2e4 at c = 1e-3 at nu = 0.45; differenced, 35, flat in c), and the integrals int q, the same in every row, drop out.
     ref = REFERENCE
-    upper = M.change
-    upper[ref] = M.upper[ref]
-    lower, lower_x = x[:, None] * M.lower[:, :ns], x[:, None] * M.lower_x[:, ns:]
-    stick = np.empty((n, 2 * ns))
-    stick[:N, :ns] = upper[:, :ns]                                                # (2.2a): int_x^1 t p
-    stick[:N, ns:] = gamma * (lower - lower[ref])                                # -gamma {int q - x int_0^x q}
-    stick[ref, ns:] = -gamma * (0.5 * M.integral[:ns] - lower[ref])
-    stick[N:, ns:] = xs[:, None] * M.upper[:ns, :ns]                              # (2.2b): x int_x^1 q
-    stick[N:, :ns] = -gamma * M.lower[:ns, :ns]                                   # - gamma int_0^x t p
-    normal = np.zeros((n, nl))
-    normal[:N] = upper[:, ns:]
-    shear = np.empty((n, nl))
-    shear[:N] = gamma * (lower_x - lower_x[ref])
-    shear[ref] = -gamma * (0.5 * M.integral_x[ns:] - lower_x[ref])
-    shear[N:] = xs[:, None] * M.upper_x[:ns, ns:]
+    fixed = ops.fixed
+    stick, normal, shear, us_stick_p, us_normal, us_shear = _assembled(fixed, x, ns, gamma, ns)
+    varying = ops.varying(alpha)
+    width = int(np.count_nonzero(varying.columns < ns))
+    cs, cl = varying.columns[:width], varying.columns[width:] - ns
+    v_stick, v_normal, v_shear, v_us_stick, v_us_normal, v_us_shear = _assembled(varying.matrices, x, ns, gamma, width)
+    stick[:, cs], stick[:, ns + cs] = v_stick[:, :width], v_stick[:, width:]
+    normal[:, cl], shear[:, cl] = v_normal, v_shear
     us_stick = np.zeros((nl, 2 * ns))
-    us_stick[:, :ns] = -gamma * M.lower[ns:, :ns]  # (2.2b) at slip points: the stick q is below them
+    us_stick[:, :ns] = us_stick_p  # (2.2b) at slip points: the stick q is below them
+    us_stick[:, cs], us_normal[:, cl], us_shear[:, cl] = v_us_stick, v_us_normal, v_us_shear
+    integral = fixed.integral.copy()
+    integral[varying.columns] = varying.matrices.integral
     rhs = np.zeros(n)
     rhs[ref] = 1.0
     e = lay.stick_end
@@ -658,5 +700,38 @@ def collocation_system(ops: AbelOperators, gamma: float, alpha: float) -> Colloc
         rows = int(lay.starts[e]) + pinned_rows(int(lay.n_basis[e]), singular_slots.size)
         pin_to_zero(stick, singular_slots, rows, (normal, shear, rhs), (us_stick,))
     regular, singular = stick_end_rows(lay)
-    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, regular, singular, M.integral.copy(),
-                             x, us_stick, -gamma * M.lower[ns:, ns:], xl[:, None] * M.upper_x[ns:, ns:])
+    return CollocationSystem(lay, gamma, alpha, stick, normal, shear, rhs, regular, singular, integral, x, us_stick,
+                             us_normal, us_shear)
+
+
+def _assembled(M: AbelMatrices, x: np.ndarray, ns: int, gamma: float, width: int
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``collocation_system``'s blocks from the Abel integrals M of some basis columns, the first ``width`` of them on
+    the stick zone and the rest on the slip zone: (stick: p's columns then q's, normal, shear, and u* at the slip
+    points from p on the stick, from the slip columns' normal and shear parts); ``ns`` stick points among x."""
+    N = x.size
+    n = N + ns
+    S, L = slice(None, width), slice(width, None)
+    xs, xl = x[:ns], x[ns:]
+    # (2.2a) at the reference point, and at every other point less its value at the reference (``REFERENCE``): w* = 1
+    # there and 0 here. The upper integrals' differences are formed without cancellation (``AbelMatrices.change``):
+    # far from an element the kernel 1/sqrt(t^2 - x^2) barely changes from point to point, so the rows themselves hold
+    # the solution only through differences of their rounding (the componentwise condition of theta grew like 1/c,
+    # 2e4 at c = 1e-3 at nu = 0.45; differenced, 35, flat in c), and the integrals int q, the same in every row, drop out.
+    ref = REFERENCE
+    lower, lower_x = x[:, None] * M.lower[:, S], x[:, None] * M.lower_x[:, L]
+    stick = np.empty((n, 2 * width))
+    stick[:N, :width] = M.change[:, S]                                           # (2.2a): int_x^1 t p
+    stick[ref, :width] = M.upper[ref, S]
+    stick[:N, width:] = gamma * (lower - lower[ref])                             # -gamma {int q - x int_0^x q}
+    stick[ref, width:] = -gamma * (0.5 * M.integral[S] - lower[ref])
+    stick[N:, width:] = xs[:, None] * M.upper[:ns, S]                             # (2.2b): x int_x^1 q
+    stick[N:, :width] = -gamma * M.lower[:ns, S]                                  # - gamma int_0^x t p
+    normal = np.zeros((n, M.lower.shape[1] - width))
+    normal[:N] = M.change[:, L]
+    normal[ref] = M.upper[ref, L]
+    shear = np.empty((n, normal.shape[1]))
+    shear[:N] = gamma * (lower_x - lower_x[ref])
+    shear[ref] = -gamma * (0.5 * M.integral_x[L] - lower_x[ref])
+    shear[N:] = xs[:, None] * M.upper_x[:ns, L]
+    return stick, normal, shear, -gamma * M.lower[ns:, S], -gamma * M.lower[ns:, L], xl[:, None] * M.upper_x[ns:, L]

@@ -246,6 +246,28 @@ def test_rtol_takes_the_law_next_to_full_stick_where_its_bound_meets_it():
     assert "first-order law" in back.route and abs(back.c - c) <= back.error
 
 
+@pytest.mark.parametrize("nu, mu", [(0.49, 0.16), (0.499, 0.016)])
+def test_rtol_given_mu_takes_the_law_next_to_full_stick_where_its_bound_on_c_meets_it(nu, mu):
+    # rubber-like nu and friction (1 - c = 7.3e-11 and 9.3e-11): the default route's secant in c takes ~1 s; rtol given
+    # mu is on c, and the first-order law's bound on mu (60 gamma^2: 2.3e-2, 2.4e-4 relative) turned into c by its
+    # slope is 3.5e-11 and 5.6e-13 of c, so rtol = 1e-10 takes the law at once (measured 1.2 ms). Against the solver's
+    # c (the default route, within ~1e-20 of its own estimate): within the law's stated error (measured 1.5e-11
+    # against 3.5e-11, 2.0e-13 against 5.6e-13). The stresses are a solve at the law's c, first read: away from the slip
+    # zones (x <= 0.99) the solver's at its own c within 1e-9 of max(1, |p|) (measured 4.5e-12 and 6.9e-14: the bonded
+    # punch's there, which slip zones moved by 1.5e-11 change by ~gamma 1e-11 / (1 - x))
+    import warnings
+    solver = plane.flat_punch(nu=nu, mu=mu)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        law = plane.flat_punch(nu=nu, mu=mu, rtol=1e-10)
+    assert "first-order law" in law.route and "solver" in solver.route
+    assert abs(law.c - solver.c) <= law.error <= 1e-10 * law.c
+    x = np.array([0.0, 0.3, 0.9, 0.99])
+    scale = np.maximum(1.0, np.abs(solver.pressure(x)))
+    assert np.max(np.abs(law.pressure(x) - solver.pressure(x)) / scale) < 1e-9
+    assert np.max(np.abs(law.shear(x) - solver.shear(x)) / scale) < 1e-9
+
+
 @pytest.mark.parametrize("nu", [0.2, 0.3, 0.4, 0.44, 0.45, 0.49, 0.4999999])
 def test_mu_increases_through_the_hand_over_to_the_law(nu):
     # at c = 1e-5 the law (below) hands over to the solver (above): friction_coefficient([9.99999e-6, 1e-5], 0.4999999)

@@ -216,10 +216,29 @@ def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, e
                               Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
 
 
-def _law_answers(gamma: float, rtol: float | None) -> bool:
+def _law_answers(gamma: float, rtol: float | None, bound: Callable[[], float]) -> bool:
     """Whether the first-order law answers next to full stick at small gamma: below ``FIRST_ORDER_GAMMA``, or where
-    its bound ``FIRST_ORDER_R_MAX`` gamma^2 (relative, in mu) meets rtol."""
-    return gamma < FIRST_ORDER_GAMMA or (rtol is not None and FIRST_ORDER_R_MAX * gamma * gamma <= rtol)
+    ``bound()``, its relative error bound on the value rtol is on (mu given c, c given mu), meets rtol."""
+    return gamma < FIRST_ORDER_GAMMA or (rtol is not None and bound() <= rtol)
+
+
+def _law_mu_bound(gamma: float) -> float:
+    """The first-order law's relative error bound in mu, ``FIRST_ORDER_R_MAX`` gamma^2."""
+    return FIRST_ORDER_R_MAX * gamma * gamma
+
+
+def _law_stick_width(mu: float, gamma: float) -> tuple[float, float, float]:
+    """c, 1 - c and the bound on the error of c of the first-order law for mu: mu's bound turned into c by the law's
+    slope d mu / d logit c (d c = c (1 - c) d logit c); inf where the slope is 0 (c = 0)."""
+    c, gap = float(stick_width_first_order(mu, gamma)), float(slip_width_first_order(mu, gamma))
+    slope = friction_slope_first_order(c, gap, gamma)
+    return c, gap, (c * gap * _law_mu_bound(gamma) * mu / slope if slope > 0.0 else math.inf)
+
+
+def _law_c_bound(mu: float, gamma: float) -> float:
+    """The first-order law's relative error bound in c for mu (``_law_stick_width``)."""
+    c, _, error = _law_stick_width(mu, gamma)
+    return error / c if c > 0.0 else math.inf
 
 
 def _near_one_given_c(nu: float | None, gamma: float, c: float, level: int, law: bool) -> StripPunchSolution:
@@ -227,7 +246,7 @@ def _near_one_given_c(nu: float | None, gamma: float, c: float, level: int, law:
     gap = 1.0 - c
     if law:
         mu = gamma / elliptic_ratio(c, gap)
-        return _near_one(nu, gamma, mu, c, gap, FIRST_ORDER_R_MAX * gamma * gamma * mu, None, level)
+        return _near_one(nu, gamma, mu, c, gap, _law_mu_bound(gamma) * mu, None, level)
     solve = solve_given_c(c, gap, gamma, level)
     return _near_one(nu, gamma, solve.field.mu, c, gap, solve.error, solve.field, level)
 
@@ -240,8 +259,7 @@ def _near_one_given_mu(nu: float | None, gamma: float, mu: float, level: int, la
             return _near_one(nu, gamma, mu, solve.field.c, solve.field.gap, solve.error, solve.field, level)
         except SolverError:  # the secant in c near c = 1 at small gamma (gamma = 2e-4, 1 - c = 5e-10): the law below
             pass
-    c, gap = float(stick_width_first_order(mu, gamma)), float(slip_width_first_order(mu, gamma))
-    error = c * gap * FIRST_ORDER_R_MAX * gamma * gamma * mu / friction_slope_first_order(c, gap, gamma)
+    c, gap, error = _law_stick_width(mu, gamma)
     return _near_one(nu, gamma, mu, c, gap, error, None, level)
 
 
@@ -296,9 +314,11 @@ def strip_punch(*, nu: float | None = None, gamma: float | None = None, mu: floa
     ``rtol`` (instead of ``level``): the coarsest level whose typical accuracy meets it (``RTOL_START``), then finer
     ones while ``error`` exceeds rtol times mu (given c) or c (given mu); if none does (the estimate's floor is 1e-10
     relative), the most accurate result with an ``AccuracyWarning``. Reading ``error`` costs a second solve. Next to
-    full stick at small gamma (1 - c < 1e-8, gamma < 0.02), where a solve costs 0.3 ... 2 s, the first-order law
-    answers at once wherever its bound, 60 gamma^2 relative in mu, meets rtol (the stresses then a solve at c, formed
-    when first read); without rtol the solver does, from gamma = 3e-5 up (``FIRST_ORDER_GAMMA``; below, the law).
+    full stick at small gamma (1 - c < 1e-8, gamma < 0.02), where a solve costs 0.3 ... 3 s, the first-order law
+    answers at once wherever its bound meets rtol: 60 gamma^2 relative in mu given c, that bound turned into c by the
+    law's slope given mu (below 1e-10 relative over most of the band: c is within 1e-8 of 1); the stresses then come
+    from a solve at c, formed when first read. Without rtol the solver answers, from gamma = 3e-5 up
+    (``FIRST_ORDER_GAMMA``; below, the law).
 
     Examples
     --------
@@ -342,7 +362,7 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
         if g < SMALL_GAMMA and 1.0 - c < SERIES_GAP_MIN:
-            return _near_one_given_c(nu, g, c, level, _law_answers(g, rtol))
+            return _near_one_given_c(nu, g, c, level, _law_answers(g, rtol, lambda: _law_mu_bound(g)))
         solve = solve_given_c(c, 1.0 - c, g, level)
         return _from_field(nu, solve.field, solve.error, level)
     mu = real_number(check_mu(mu), "mu")
@@ -353,7 +373,7 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
     if _below_solver(mu, g, level):
         c, error = law_stick_width(mu, g, level)
         return _from_law(nu, g, mu, c, error)
-    law = _law_answers(g, rtol)
+    law = g < SMALL_GAMMA and _law_answers(g, rtol, lambda: _law_c_bound(mu, g))
     if _full_stick(mu, g, level, law):
         how = "the first-order law" if law else f"solver level {level}"
         route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level, law):.10g}, the friction "

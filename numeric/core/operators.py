@@ -437,8 +437,9 @@ class AbelOperators:
 
     @property
     def fixed(self) -> AbelMatrices:
-        """The integrals that do not depend on alpha, with the columns that do (``varying``) 0: read-only views of the
-        arrays every alpha shares."""
+        """The integrals that do not depend on alpha, with the columns that do (``varying(alpha)``) 0: read-only views
+        of the arrays every alpha shares. (``varying(alpha, displacement=True)`` also replaces the regular family of the
+        elements at c, which here is the stresses'.)"""
         return _abel_matrices({key: _read_only(value) for key, value in self._fixed.items()}, self.x.size)
 
     def varying(self, alpha: float, displacement: bool = False) -> VaryingColumns:

@@ -67,3 +67,31 @@ def test_every_friction_and_stick_width_is_answered(nu):
             problems += [f"c = {c}: {p}" for p in _fields_are_finite_or_refused(s)]
         _call(lambda: plane.friction_coefficient(c, nu))
     assert not problems, problems
+
+
+@pytest.mark.parametrize("gamma", [1e-160, 1e-310, 5e-324])
+def test_below_the_solvers_smallest_coupling_the_law_and_the_uncoupled_punch_answer(gamma):
+    # the solver's theta ~ gamma^2 K/K' underflows below gamma ~ 1e-155 (it gave mu = 0 at c = 1/2 and c = 0.4999 for
+    # mu = 0.7817 gamma at gamma = 1e-160) and its blocks overflow below ~5e-309 (NaN stresses at 1e-308); below
+    # GAMMA_FLOOR = 1e-150 mu and c are the first-order law's (its error 60 gamma^2 relative, below rounding) and the
+    # stresses those of the punch without coupling (O(gamma) of max(1, |p|) off). Checked against the closed forms:
+    # the law (the same expression: to the bit), Sadowsky's and Abramov's punches (to the bit, the same fields), and
+    # every field finite; just above the floor the solver agrees with the law within its own error (measured 2.4e-13
+    # at c = 1/2, gamma = 2e-150; bound 1e-12)
+    from asymptotics.plane import bonded_traction, pressure_sadowsky, stick_width_first_order
+    from numeric.core.plane_guess import elliptic_ratio
+    from numeric.solutions.plane_punch import GAMMA_FLOOR
+    assert gamma < GAMMA_FLOOR
+    x = np.array([0.0, 0.3, 0.9, 0.99])
+    half = plane.flat_punch(gamma=gamma, c=0.5)
+    assert half.mu == gamma / elliptic_ratio(0.5, 0.5) and "below" in half.route
+    assert np.array_equal(half.pressure(x), pressure_sadowsky(x)) and not np.any(half.shear(x))
+    near = plane.flat_punch(gamma=gamma, c=1.0 - 1e-12)
+    bonded = np.asarray(bonded_traction(x, gamma))
+    assert np.array_equal(near.pressure(x), bonded.real) and np.array_equal(near.shear(x), bonded.imag)
+    given = plane.flat_punch(gamma=gamma, mu=gamma)
+    assert given.c == float(stick_width_first_order(gamma, gamma))
+    for s in (half, near, given, plane.power_law(2, gamma=gamma, mu=3.0 * gamma)):
+        assert not _fields_are_finite_or_refused(s)
+    above = plane.flat_punch(gamma=2e-150, c=0.5)
+    assert "solver" in above.route and abs(above.mu / (2e-150 / elliptic_ratio(0.5, 0.5)) - 1.0) < 1e-12

@@ -45,7 +45,9 @@ from numeric.solutions.plane_solver import (C_SMALLEST, DEFAULT_LEVEL, FIRST_ORD
 from numeric.solutions.solution import Deferred, DeferredError, meets, warn_unmet
 
 __all__ = ["StripPunchSolution", "strip_punch", "plane_stick_width", "plane_friction_coefficient", "plane_slip_limit",
-           "plane_largest_stick_width", "points", "ABOVE_C_MAX", "ROUNDING_ULPS", "RTOL_START"]
+           "plane_largest_stick_width", "points", "ABOVE_C_MAX", "GAMMA_FLOOR", "ROUNDING_ULPS", "RTOL_START"]
+
+EPS = float(np.finfo(float).eps)
 
 
 def points(x: ArrayLike) -> np.ndarray:
@@ -123,7 +125,8 @@ class StripPunchSolution:
         "law below the solver's smallest c ..." (c < 1e-5), "near the limit mu -> inf ..." (mu gamma > 1e6),
         "full stick to within ..." (1 - c < 2^-40 at small gamma), "near full stick at small gamma ..." (gamma < 0.02,
         1 - c < 1e-8: the solver with its stresses, or below gamma = 3e-5 and where rtol is met by its bound the
-        first-order law, the stresses then a solve at c when first read) or
+        first-order law, the stresses then a solve at c when first read), "gamma = ... below 1e-150 ..." (the law and
+        the uncoupled punch's stresses, ``GAMMA_FLOOR``) or
         "c = ... is c_max to rounding: ..." (given c within 4 ulp of c_max: the slip limit).
     residual : float
         The eigen residual (the generic mode's amplitude; 0 for closed forms).
@@ -216,6 +219,21 @@ def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, e
                               Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
 
 
+def _below_floor(nu: float | None, gamma: float, mu: float, c: float, gap: float, given_c: bool) -> StripPunchSolution:
+    """gamma below ``GAMMA_FLOOR``: mu and c of the first-order law, their error its bound or the rounding of K/K'
+    (8 ulp relative), whichever is larger; the stresses of the bonded punch next to full stick (1 - c below
+    ``SERIES_GAP_MIN``), else of the frictionless one."""
+    bound = max(_law_mu_bound(gamma), 8.0 * EPS)
+    # given mu: the bound turned into c by d mu / d logit c, both ~gamma: their ratio formed from mu/gamma (gamma may be
+    # subnormal, the slope 0)
+    error = bound * mu if given_c else c * gap * bound * (mu / gamma) / friction_slope_first_order(c, gap, 1.0)
+    bonded = gap < SERIES_GAP_MIN
+    route = (f"gamma = {gamma:.3g} below {GAMMA_FLOOR:g}, where the solver's blocks overflow: mu and c from the "
+             f"first-order law mu/gamma = K(c)/K'(c) (error {bound:.2g} relative in mu); the stresses of the "
+             f"{'bonded punch (Abramov)' if bonded else 'frictionless punch (Sadowsky)'}, within O(gamma) of max(1, |p|)")
+    return StripPunchSolution(nu, gamma, mu, c, gap, error, route, 0.0, _Abramov(gamma) if bonded else _Sadowsky(gamma))
+
+
 def _law_answers(gamma: float, rtol: float | None, bound: Callable[[], float]) -> bool:
     """Whether the first-order law answers next to full stick at small gamma: below ``FIRST_ORDER_GAMMA``, or where
     ``bound()``, its relative error bound on the value rtol is on (mu given c, c given mu), meets rtol."""
@@ -270,6 +288,14 @@ ROUNDING_ULPS = 4.0
 #: Given c, 1 - c below 1 - c_max of the guess table by more than this (relative) is refused at once (the table's
 #: 1 - c_max is good to ~1e-8 relative; nearer, the solver decides): Newton in theta failed to converge there before.
 ABOVE_C_MAX = 1e-6
+
+#: Below this gamma the solver leaves the doubles: theta = atan(mu gamma) ~ gamma^2 K(c)/K'(c) underflows (measured at
+#: c = 0.05, 0.5, 0.9: its mu within 2.4e-13 of the first-order law at gamma = 1e-20 ... 1e-155, 0 at 1e-160, and given
+#: mu = 0.7817 gamma its c 0.4999 for 0.5; its blocks overflow below ~5e-309, q = R sin(theta)/gamma), while nothing it
+#: adds is above rounding: the first-order law's error in mu, 60 gamma^2 relative, is below 1e-298, and the stresses
+#: differ from those of the punch without coupling (Sadowsky's; the bonded one's next to full stick) by O(gamma) of
+#: max(1, |p|) (q and u ~ gamma, p by O(gamma^2)).
+GAMMA_FLOOR = 1e-150
 
 #: Given mu, the law is asked whether c < C_SMALLEST where the first-order c is below this: the true c is below the
 #: first-order one (mu/mu_1 - 1 > 0), by a factor exp(-L gamma^2 r) >= exp(-0.5 L), so from here on it is above 1e-5.
@@ -361,6 +387,8 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
         if 1.0 - c < (1.0 - ABOVE_C_MAX) * largest:
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
+        if g < GAMMA_FLOOR:
+            return _below_floor(nu, g, g / elliptic_ratio(c, 1.0 - c), c, 1.0 - c, True)
         if g < SMALL_GAMMA and 1.0 - c < SERIES_GAP_MIN:
             return _near_one_given_c(nu, g, c, level, _law_answers(g, rtol, lambda: _law_mu_bound(g)))
         solve = solve_given_c(c, 1.0 - c, g, level)
@@ -388,6 +416,9 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
                  f"the solves at mu gamma = {LIMIT_MU_GAMMA[0]:g}, {LIMIT_MU_GAMMA[1]:g} (solver level {level}), "
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
+    if g < GAMMA_FLOOR:
+        return _below_floor(nu, g, mu, float(stick_width_first_order(mu, g)), float(slip_width_first_order(mu, g)),
+                            False)
     if g < SMALL_GAMMA and float(slip_width_first_order(mu, g)) < SERIES_GAP_MIN:
         return _near_one_given_mu(nu, g, mu, level, law)
     solve = solve_given_mu(mu, g, level)

@@ -16,6 +16,7 @@ References
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -98,7 +99,10 @@ def hand_over_ratio(gamma: float) -> float:
     c0, mu0 = table_least_c(), table_least_mu(gamma)
     if not (math.isfinite(c0) and math.isfinite(mu0)):
         return 1.0
-    return mu0 / law_friction_coefficient(c0, gamma, 2)
+    law = law_friction_coefficient(c0, gamma, 2)
+    if min(mu0, law) < sys.float_info.min:  # subnormal mu (gamma below ~1e-306): a ratio of roundings (0/0 at
+        return 1.0                           # gamma = 5e-324), where the law is exact to rounding anyway
+    return mu0 / law
 
 
 def matched_bound(bound: float, ratio: float) -> float:

@@ -280,15 +280,18 @@ FIRST_ORDER_GAMMA = 3e-5
 
 @lru_cache(maxsize=64)
 def full_stick_friction(gamma: float, level: int = DEFAULT_LEVEL, law: bool = False) -> float:
-    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level; with ``law`` or below
-    ``FIRST_ORDER_GAMMA`` the first-order law, to 60 gamma^2 relative): from there on the stick zone fills the contact
-    to within 9.1e-13. Only where c_max lies above 1 - ``FULL_STICK_GAP`` (the limit is not resolved,
-    ``limit_resolved``; else ValueError: no friction reaches it)."""
+    """mu at 1 - c = ``FULL_STICK_GAP`` (a given-c solve, 0.5-1.5 s, kept per gamma and level): from there on the stick
+    zone fills the contact to within 9.1e-13. With ``law`` or below ``FIRST_ORDER_GAMMA`` the first-order law's mu
+    there raised by its bound, (1 + ``FIRST_ORDER_R_MAX`` gamma^2) times it: mu/mu_1 - 1 = r gamma^2 with 0 < r <= 60,
+    so beyond it the stick zone surely fills the contact (the law's own mu there was 1.2 % below the solver's at
+    nu = 0.49, and friction between the two had been called full stick with 1 - c up to 1.24e-12). Only where c_max
+    lies above 1 - ``FULL_STICK_GAP`` (the limit is not resolved, ``limit_resolved``; else ValueError: no friction
+    reaches it)."""
     if not 0.0 < gamma or limit_resolved(gamma):
         raise ValueError(f"gamma = {gamma!r}: the full-stick friction is defined only where 1 - c_max < "
                          f"{FULL_STICK_GAP:.3g} (gamma below ~0.157)")
     if law or gamma < FIRST_ORDER_GAMMA:
-        return gamma / elliptic_ratio(1.0 - FULL_STICK_GAP, FULL_STICK_GAP)
+        return gamma / elliptic_ratio(1.0 - FULL_STICK_GAP, FULL_STICK_GAP) * (1.0 + FIRST_ORDER_R_MAX * gamma * gamma)
     return solve_given_c(1.0 - FULL_STICK_GAP, FULL_STICK_GAP, gamma, level).field.mu
 
 

@@ -250,11 +250,12 @@ def test_rtol_takes_the_law_next_to_full_stick_where_its_bound_meets_it():
 def test_rtol_given_mu_takes_the_law_next_to_full_stick_where_its_bound_on_c_meets_it(nu, mu):
     # rubber-like nu and friction (1 - c = 7.3e-11 and 9.3e-11): the default route's secant in c takes ~1 s; rtol given
     # mu is on c, and the first-order law's bound on mu (60 gamma^2: 2.3e-2, 2.4e-4 relative) turned into c by its
-    # slope is 3.5e-11 and 5.6e-13 of c, so rtol = 1e-10 takes the law at once (measured 1.2 ms). Against the solver's
-    # c (the default route, within ~1e-20 of its own estimate): within the law's stated error (measured 1.5e-11
-    # against 3.5e-11, 2.0e-13 against 5.6e-13). The stresses are a solve at the law's c, first read: away from the slip
-    # zones (x <= 0.99) the solver's at its own c within 1e-9 of max(1, |p|) (measured 4.5e-12 and 6.9e-14: the bonded
-    # punch's there, which slip zones moved by 1.5e-11 change by ~gamma 1e-11 / (1 - x))
+    # slope (c (1 - c) expm1 of the shift in logit c) is 4.7e-11 and 5.6e-13 of c, so rtol = 1e-10 takes the law at
+    # once (measured 1.2 ms). Against the solver's c (the default route, within ~1e-20 of its own estimate): within
+    # the law's stated error (measured 1.5e-11 against 4.7e-11, 2.0e-13 against 5.6e-13). The stresses are a solve at
+    # the law's c, first read: away from the slip zones (x <= 0.99) the solver's at its own c within 1e-9 of
+    # max(1, |p|) (measured 4.5e-12 and 6.9e-14: the bonded punch's there, which slip zones moved by 1.5e-11 change
+    # by ~gamma 1e-11 / (1 - x))
     import warnings
     solver = plane.flat_punch(nu=nu, mu=mu)
     with warnings.catch_warnings():

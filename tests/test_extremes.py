@@ -177,9 +177,9 @@ def test_vanishing_gamma_takes_the_law_and_agrees_with_the_solver(ratio):
 
 @pytest.mark.parametrize("gamma", [5e-324, 1e-320])
 def test_subnormal_gamma_below_the_tables_least_c_is_answered(gamma):
-    # at gamma = 5e-324, c = 1e-6 the hand-over ratio to the table (``law.hand_over_ratio``) was 0/0: the table's and the
-    # law's mu at c = 1e-5 both underflow (ZeroDivisionError). There the law is exact to rounding: mu is gamma times
-    # its value at gamma = 1e-300 (a normal double, the same law) to the subnormals' rounding (two of their ulps)
+    # at gamma = 5e-324, c = 1e-6 the hand-over ratio to the table (``law.hand_over_ratio``) was 0/0: the table's and
+    # the law's mu at c = 1e-5 both underflow (ZeroDivisionError). There the law is exact to rounding: mu is gamma
+    # times its value at gamma = 1e-300 (a normal double, the same law) to the subnormals' rounding (two of their ulps)
     normal = flat_punch(gamma=1e-300, c=1e-6).mu / 1e-300
     s = flat_punch(gamma=gamma, c=1e-6)
     assert s.mu >= 0.0 and abs(s.mu - normal * gamma) <= 2 * 5e-324

@@ -95,7 +95,7 @@ def test_next_to_full_stick_at_tiny_gamma_the_calculator_gives_the_stresses():
     # nu = 0.49999 (gamma = 2e-5, below FIRST_ORDER_GAMMA = 3e-5), mu = 1.6e-4: 1 - c = 9.7e-11, below the small-gamma
     # series' reach, where mu and c are the first-order law's. The strip punch's stresses were not computed there
     # (NotImplementedError: the strip's centre pressure and slip None, the cylinder a ValueError); now they are the
-    # solver's at c (measured within 7.8e-10 of level 4 down to gamma = 1e-100, ``numeric.solutions.plane_small_gamma``).
+    # solver's at c (within 7.8e-10 of level 4 down to gamma = 1e-100, ``numeric.solutions.plane_small_gamma``).
     # Checked: the strip's centre pressure against Abramov's bonded punch (a closed form), which slip zones of 1e-10
     # change at x = 0 by far less than the bound 1e-10 (measured 1.3e-15 relative here, 8e-15 at gamma = 1e-6), and the
     # cylinder's half-width against Hertz's, which the coupling changes by O(gamma^2) (measured -0.37 gamma^2; bound

@@ -123,7 +123,8 @@ def test_tiny_gamma_given_mu_is_full_stick_at_once(gamma):
     # mu = 0.3 at gamma -> 0: the first-order law tan(theta) = gamma^2 K(c)/K'(c) puts 1 - c = 8 exp(-pi mu/gamma) = 0
     # (closed form), below FULL_STICK_GAP: full stick, as numeric.flat_punch(gamma=1e-20, mu=0.3) answers c = 1. The
     # solver at gamma itself raised SolverError after 5-9 s (gamma = 1e-16, 1e-28, 1e-100) or NoEigenvalueError after
-    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below FIRST_ORDER_GAMMA)
+    # 13 s (1e-20): now no solve at all (the threshold mu at 1 - c = 2^-40 is the first-order law's below
+    # FIRST_ORDER_GAMMA)
     from asymptotics.plane import slip_width_first_order
     from numeric.solutions.plane_solver import FULL_STICK_GAP
     for mu in (0.3, 1e-8):
@@ -303,8 +304,8 @@ def test_the_smallest_friction_gives_no_stick_zone():
 
 @pytest.mark.parametrize("factor", [1.001, 1.01])
 def test_rtol_given_mu_next_to_the_full_stick_friction_states_an_error_that_covers_c(factor):
-    # with rtol the full-stick threshold (mu at 1 - c = 2^-40) is the first-order law's; at nu = 0.49 that is 1.2 % below
-    # the solver's (r = 30.9), and friction between the two was answered "full stick" with c = 1 - 2^-41 +- 2^-41
+    # with rtol the full-stick threshold (mu at 1 - c = 2^-40) is the first-order law's; at nu = 0.49 that is 1.2 %
+    # below the solver's (r = 30.9), and friction between the two was answered "full stick" with c = 1 - 2^-41 +- 2^-41
     # while the solver's 1 - c there is 1.24e-12 and 9.6e-13 (factor 1.001, 1.01 above the law's threshold): c was up to
     # 7.9e-13 off against a stated 4.5e-13. The threshold is now the law's raised by its bound (1 + 60 gamma^2; r > 0),
     # so these go to the law's c with its bound; checked against the solver's c (the default route; error ~1e-20)

@@ -47,8 +47,8 @@ from numeric.core.charts import (AT_C2, EDGE, PLAIN, SLIP, SLIP_END, STICK, STIC
 from numeric.core.linear_algebra import pin_to_zero
 from numeric.core.stick_pressure_pins import pinned_rows, pins_stick_pressure
 
-__all__ = ["AbelMatrices", "AbelOperators", "VaryingColumns", "CollocationSystem", "collocation_system", "near_plain", "normal_factor",
-           "partner_near_rule", "projected_outside_legendre", "self_legendre_block", "stick_end_rows"]
+__all__ = ["AbelMatrices", "AbelOperators", "VaryingColumns", "CollocationSystem", "collocation_system", "near_plain",
+           "normal_factor", "partner_near_rule", "projected_outside_legendre", "self_legendre_block", "stick_end_rows"]
 
 EXTRA_NODES = 6
 """Gauss points beyond the degree + 1 that are exact for a plain element: they cover the smooth factor 1/x."""
@@ -718,7 +718,8 @@ def _assembled(M: AbelMatrices, x: np.ndarray, ns: int, gamma: float, width: int
     # there and 0 here. The upper integrals' differences are formed without cancellation (``AbelMatrices.change``):
     # far from an element the kernel 1/sqrt(t^2 - x^2) barely changes from point to point, so the rows themselves hold
     # the solution only through differences of their rounding (the componentwise condition of theta grew like 1/c,
-    # 2e4 at c = 1e-3 at nu = 0.45; differenced, 35, flat in c), and the integrals int q, the same in every row, drop out.
+    # 2e4 at c = 1e-3 at nu = 0.45; differenced, 35, flat in c), and the integrals int q, the same in every row, drop
+    # out.
     ref = REFERENCE
     lower, lower_x = x[:, None] * M.lower[:, S], x[:, None] * M.lower_x[:, L]
     stick = np.empty((n, 2 * width))

@@ -230,7 +230,8 @@ def _below_floor(nu: float | None, gamma: float, mu: float, c: float, gap: float
     bonded = gap < SERIES_GAP_MIN
     route = (f"gamma = {gamma:.3g} below {GAMMA_FLOOR:g}, where the solver's blocks overflow: mu and c from the "
              f"first-order law mu/gamma = K(c)/K'(c) (error {bound:.2g} relative in mu); the stresses of the "
-             f"{'bonded punch (Abramov)' if bonded else 'frictionless punch (Sadowsky)'}, within O(gamma) of max(1, |p|)")
+             f"{'bonded punch (Abramov)' if bonded else 'frictionless punch (Sadowsky)'}, within O(gamma) of "
+             "max(1, |p|)")
     return StripPunchSolution(nu, gamma, mu, c, gap, error, route, 0.0, _Abramov(gamma) if bonded else _Sadowsky(gamma))
 
 
@@ -405,8 +406,9 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
         return _from_law(nu, g, mu, c, error)
     law = g < SMALL_GAMMA and _law_answers(g, rtol, lambda: _law_c_bound(mu, g))
     if _full_stick(mu, g, level, law):
-        how = "the first-order law" if law else f"solver level {level}"
-        route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {full_stick_friction(g, level, law):.10g}, the friction "
+        threshold = full_stick_friction(g, level, law)
+        how = "the first-order law's, raised by its bound" if law else f"solver level {level}"
+        route = (f"full stick to within {FULL_STICK_GAP:.2g}: mu >= {threshold:.10g}, the friction "
                  f"at 1 - c = {FULL_STICK_GAP:.2g} ({how}); c = 1 - {FULL_STICK_GAP / 2:.2g} +- "
                  f"{FULL_STICK_GAP / 2:.2g}, stresses of the bonded punch (Abramov), no slip")
         return StripPunchSolution(nu, g, mu, 1.0 - 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP, 0.5 * FULL_STICK_GAP,

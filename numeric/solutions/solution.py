@@ -26,8 +26,8 @@ from numpy.typing import ArrayLike
 from asymptotics.arrays import scalar_or_array
 from asymptotics.materials import check_x
 
-__all__ = ["AccuracyWarning", "Deferred", "DeferredError", "StressField", "FlatPunchSolution", "Offer", "first_meeting", "meets",
-           "warn_unmet"]
+__all__ = ["AccuracyWarning", "Deferred", "DeferredError", "StressField", "FlatPunchSolution", "Offer", "first_meeting",
+           "meets", "warn_unmet"]
 
 
 class AccuracyWarning(UserWarning):

@@ -219,18 +219,19 @@ def _near_one(nu: float | None, gamma: float, mu: float, c: float, gap: float, e
                               Deferred(lambda: solve_given_c(c, gap, gamma, level).field))
 
 
-def _below_floor(nu: float | None, gamma: float, mu: float, c: float, gap: float, given_c: bool) -> StripPunchSolution:
-    """gamma below ``GAMMA_FLOOR``: mu and c of the first-order law, their error its bound or the rounding of K/K'
-    (8 ulp relative), whichever is larger; the stresses of the bonded punch next to full stick (1 - c below
-    ``SERIES_GAP_MIN``), else of the frictionless one."""
-    bound = max(_law_mu_bound(gamma), 8.0 * EPS)
-    # given mu: the bound turned into c by d mu / d logit c, both ~gamma: their ratio formed from mu/gamma (gamma may be
-    # subnormal, the slope 0)
-    error = bound * mu if given_c else c * gap * bound * (mu / gamma) / friction_slope_first_order(c, gap, 1.0)
+def _floor_bound(gamma: float) -> float:
+    """The first-order law's relative error bound in mu below ``GAMMA_FLOOR``: its bound or the rounding of K/K'
+    (8 ulp), whichever is larger."""
+    return max(_law_mu_bound(gamma), 8.0 * EPS)
+
+
+def _below_floor(nu: float | None, gamma: float, mu: float, c: float, gap: float, error: float) -> StripPunchSolution:
+    """gamma below ``GAMMA_FLOOR``: mu and c of the first-order law with their ``error`` (from ``_floor_bound``); the
+    stresses of the bonded punch next to full stick (1 - c below ``SERIES_GAP_MIN``), else of the frictionless one."""
     bonded = gap < SERIES_GAP_MIN
     route = (f"gamma = {gamma:.3g} below {GAMMA_FLOOR:g}, where the solver's blocks overflow: mu and c from the "
-             f"first-order law mu/gamma = K(c)/K'(c) (error {bound:.2g} relative in mu); the stresses of the "
-             f"{'bonded punch (Abramov)' if bonded else 'frictionless punch (Sadowsky)'}, within O(gamma) of "
+             f"first-order law mu/gamma = K(c)/K'(c) (error {_floor_bound(gamma):.2g} relative in mu); the stresses "
+             f"of the {'bonded punch (Abramov)' if bonded else 'frictionless punch (Sadowsky)'}, within O(gamma) of "
              "max(1, |p|)")
     return StripPunchSolution(nu, gamma, mu, c, gap, error, route, 0.0, _Abramov(gamma) if bonded else _Sadowsky(gamma))
 
@@ -246,14 +247,16 @@ def _law_mu_bound(gamma: float) -> float:
     return FIRST_ORDER_R_MAX * gamma * gamma
 
 
-def _law_stick_width(mu: float, gamma: float) -> tuple[float, float, float]:
-    """c, 1 - c and the bound on the error of c of the first-order law for mu: mu's bound turned into a shift of
-    logit c by the law's slope d mu / d logit c, and that into c as c (1 - c) expm1(shift) (next to full stick the
-    shift is not small: 0.48 at nu = 0.49, mu = 0.16, where the true 1 - c is the law's times up to exp(shift));
-    inf where the slope is 0 (c = 0)."""
+def _law_stick_width(mu: float, gamma: float, bound: float | None = None) -> tuple[float, float, float]:
+    """c, 1 - c and the bound on the error of c of the first-order law for mu: mu's relative ``bound`` (default
+    ``_law_mu_bound``) turned into a shift of logit c by the law's slope d mu / d logit c, and that into c as
+    c (1 - c) expm1(shift) (next to full stick the shift is not small: 0.48 at nu = 0.49, mu = 0.16, where the true
+    1 - c is the law's times up to exp(shift)); inf where the slope is 0 (c = 0). mu and the slope are both ~gamma:
+    their ratio is formed from mu/gamma (gamma may be subnormal, the slope 0)."""
     c, gap = float(stick_width_first_order(mu, gamma)), float(slip_width_first_order(mu, gamma))
-    slope = friction_slope_first_order(c, gap, gamma)
-    return c, gap, (c * gap * math.expm1(_law_mu_bound(gamma) * mu / slope) if slope > 0.0 else math.inf)
+    slope = friction_slope_first_order(c, gap, 1.0)  # d (mu/gamma) / d logit c
+    bound = _law_mu_bound(gamma) if bound is None else bound
+    return c, gap, (c * gap * math.expm1(bound * (mu / gamma) / slope) if slope > 0.0 else math.inf)
 
 
 def _law_c_bound(mu: float, gamma: float) -> float:
@@ -391,7 +394,8 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
             raise NoEigenvalueError(f"no friction coefficient gives stick half-width c = {c!r} at gamma = {g:.6g}: it "
                                     f"lies above the largest, c_max = {1.0 - largest:.10g} (mu -> inf)")
         if g < GAMMA_FLOOR:
-            return _below_floor(nu, g, g / elliptic_ratio(c, 1.0 - c), c, 1.0 - c, True)
+            mu = g / elliptic_ratio(c, 1.0 - c)
+            return _below_floor(nu, g, mu, c, 1.0 - c, _floor_bound(g) * mu)
         if g < SMALL_GAMMA and 1.0 - c < SERIES_GAP_MIN:
             return _near_one_given_c(nu, g, c, level, _law_answers(g, rtol, lambda: _law_mu_bound(g)))
         solve = solve_given_c(c, 1.0 - c, g, level)
@@ -421,8 +425,7 @@ def _strip_punch(nu: float | None, gamma: float | None, mu: float | None, c: flo
                  f"p = q/mu on the slip zones; not resolved within {f.unresolved[1] - f.c:.2g} of x = c")
         return StripPunchSolution(nu, g, mu, f.c, f.gap, limit.error, route, 0.0, f)
     if g < GAMMA_FLOOR:
-        return _below_floor(nu, g, mu, float(stick_width_first_order(mu, g)), float(slip_width_first_order(mu, g)),
-                            False)
+        return _below_floor(nu, g, mu, *_law_stick_width(mu, g, _floor_bound(g)))
     if g < SMALL_GAMMA and float(slip_width_first_order(mu, g)) < SERIES_GAP_MIN:
         return _near_one_given_mu(nu, g, mu, level, law)
     solve = solve_given_mu(mu, g, level)

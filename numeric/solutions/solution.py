@@ -77,9 +77,6 @@ class DeferredError(Deferred):
     def __init__(self, compute: Callable[[], float]) -> None:
         super().__init__(lambda: float(compute()))
 
-    def value(self) -> float:
-        return super().value()
-
 
 class StressField(Protocol):
     """What a route hands the solution: p, q of (2.1) and u of (2.10) on 0 <= x < 1, and the
